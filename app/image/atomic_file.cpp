@@ -1,0 +1,26 @@
+#include "app/image/atomic_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace app {
+
+void writeFileAtomically(const std::string& path, std::string_view bytes) {
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  auto fail = [&](const char* what) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot " + what + ": " + reason);
+  };
+  std::FILE* file = std::fopen(temporary.c_str(), "wb");
+  if (!file) fail("create");
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size() &&
+                       std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
+  if (std::fclose(file) != 0 || !written) fail("write");
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail("rename into place");
+}
+
+}  // namespace app

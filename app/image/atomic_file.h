@@ -1,0 +1,14 @@
+// Writing a file so that it is replaced whole or not at all: write a temporary file in the same
+// folder, flush it, then rename it over the target.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace app {
+
+// Throws std::runtime_error naming `path` when the file cannot be written; the old file, if
+// any, is then untouched and no temporary file is left behind.
+void writeFileAtomically(const std::string& path, std::string_view bytes);
+
+}  // namespace app

@@ -1,0 +1,54 @@
+// walkrad: the command line of spec/cli.md.
+#include "app/cli/render_command.h"
+#include "app/window/walk_window.h"
+#include "engine/diagnostics.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App cli{"walkrad: walk through a building lit by an adaptive radiosity solution"};
+  cli.require_subcommand(1);
+
+  app::RenderOptions render;
+  CLI::App* renderCommand = cli.add_subcommand("render", "render a camera view headless (OSMesa) to an image");
+  renderCommand->add_option("scene", render.scene, "scene file (.json)")->required();
+  renderCommand->add_option("--out", render.out, "tone-mapped 8-bit sRGB PNG");
+  renderCommand->add_option("--linear", render.linear, "linear radiance, 3-channel float PFM");
+  renderCommand->add_option("--camera", render.camera, "a camera of the scene (default: `default`)");
+  renderCommand->add_option("--width", render.width, "image width")->check(CLI::Range(1, 16384));
+  renderCommand->add_option("--height", render.height, "image height")->check(CLI::Range(1, 16384));
+  renderCommand->add_flag("--wireframe", render.wireframe, "draw the mesh edges over the shading");
+  renderCommand->add_option("--stats", render.stats, "write statistics as JSON");
+  renderCommand->add_option("--exposure", render.exposure, "radiance scale before sRGB (default: automatic)")
+      ->check(CLI::PositiveNumber);
+
+  app::ViewOptions view;
+  CLI::App* viewCommand = cli.add_subcommand("view", "open the walkthrough window (GLFW + Dear ImGui)");
+  viewCommand->add_option("scene", view.scene, "scene file (.json)")->required();
+  viewCommand->add_option("--camera", view.camera, "start at this camera (default: `default`)");
+  viewCommand->add_option("--width", view.width, "window width")->check(CLI::Range(64, 16384));
+  viewCommand->add_option("--height", view.height, "window height")->check(CLI::Range(64, 16384));
+  viewCommand->add_option("--frames", view.frames, "close after this many frames")->check(CLI::NonNegativeNumber);
+  viewCommand->add_option("--screenshot", view.screenshot, "with --frames: save the last frame as PNG");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return cli.exit(e);  // --help
+    std::cerr << "walkrad: " << e.what() << " (see walkrad --help)\n";
+    return 2;
+  }
+
+  try {
+    if (*renderCommand) return app::runRender(render);
+    return app::runView(view);
+  } catch (const engine::SceneError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "walkrad: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,196 @@
+#include "app/window/walk_window.h"
+
+#include <glad/gl.h>  // before any other GL header
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "app/gl/scene_renderer.h"
+#include "app/image/image.h"
+#include "app/view/view_camera.h"
+#include "app/window/scene_panel.h"
+#include "app/window/walk_controls.h"
+#include "engine/display_mesh.h"
+#include "engine/scene_loader.h"
+
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace app {
+
+namespace {
+
+struct GlfwSession {
+  GlfwSession() : ok(glfwInit() == GLFW_TRUE) {}
+  ~GlfwSession() {
+    if (ok) glfwTerminate();
+  }
+  bool ok;
+};
+
+struct ImGuiSession {
+  explicit ImGuiSession(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // the panel's layout is the program's, not a file's
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+  }
+  ~ImGuiSession() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+};
+
+// Wheel notches since the last frame; GLFW reports them through a callback that Dear ImGui
+// chains to.
+double g_scroll = 0;
+void onScroll(GLFWwindow*, double, double y) { g_scroll += y; }
+
+std::string screenshotName(const engine::Scene& scene) {
+  char stamp[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  return "walkrad-" + std::filesystem::path(scene.file).stem().string() + "-" + stamp + ".png";
+}
+
+WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking) {
+  WalkInput input;
+  const ImGuiIO& io = ImGui::GetIO();
+  auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+  if (!io.WantCaptureKeyboard) {
+    input.forward = down(GLFW_KEY_W);
+    input.back = down(GLFW_KEY_S);
+    input.left = down(GLFW_KEY_A);
+    input.right = down(GLFW_KEY_D);
+    input.up = down(GLFW_KEY_E) || down(GLFW_KEY_PAGE_UP);
+    input.down = down(GLFW_KEY_Q) || down(GLFW_KEY_PAGE_DOWN);
+    input.fast = down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT);
+  }
+  glm::dvec2 mouse;
+  glfwGetCursorPos(window, &mouse.x, &mouse.y);
+  const bool rightHeld = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  if (rightHeld && !looking && !io.WantCaptureMouse) looking = true;  // a look starts off the panel
+  if (!rightHeld) looking = false;
+  if (looking) {
+    input.lookDx = mouse.x - lastMouse.x;
+    input.lookDy = mouse.y - lastMouse.y;
+  }
+  lastMouse = mouse;
+  if (!io.WantCaptureMouse) input.scroll = g_scroll;
+  g_scroll = 0;
+  return input;
+}
+
+}  // namespace
+
+int runView(const ViewOptions& options) {
+  const engine::Scene scene = engine::loadScene(options.scene);
+  ViewCamera camera;
+  if (!chooseCamera(scene, options.camera, camera)) {
+    std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
+    return 2;
+  }
+  const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+
+  const GlfwSession glfw;
+  if (!glfw.ok) {
+    std::cerr << "walkrad view: cannot initialise GLFW (no display?)\n";
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  const std::string title = "walkrad - " + std::filesystem::path(scene.file).filename().string();
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, title.c_str(), nullptr, nullptr);
+  if (!window) {
+    std::cerr << "walkrad view: cannot open a window with an OpenGL 3.3 core context\n";
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(options.frames > 0 ? 0 : 1);
+  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&glfwGetProcAddress))) {
+    std::cerr << "walkrad view: cannot load OpenGL functions\n";
+    glfwDestroyWindow(window);
+    return 1;
+  }
+  glfwSetScrollCallback(window, onScroll);  // before ImGui installs and chains its callbacks
+
+  int exitCode = 0;
+  {
+    const ImGuiSession imgui(window);
+    SceneRenderer renderer;
+    renderer.upload(mesh);
+    PanelState panel;
+    panel.exposure = static_cast<float>(engine::autoExposure(mesh));
+    WalkSettings walk;
+    walk.speed = defaultWalkSpeed(scene);
+
+    glm::dvec2 lastMouse{0};
+    bool looking = false, f12WasDown = false;
+    double lastTime = glfwGetTime();
+    for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
+      glfwPollEvents();
+      const double now = glfwGetTime();
+      applyWalk(readWalkInput(window, lastMouse, looking), now - lastTime, walk, camera);
+      lastTime = now;
+      const bool f12Down = glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS;
+      if (f12Down && !f12WasDown) panel.screenshotRequested = true;
+      f12WasDown = f12Down;
+
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      panel.walkSpeed = walk.speed;
+      drawScenePanel(scene, mesh, panel);
+      if (panel.jumpToCamera >= 0) {
+        camera = fromSceneCamera(scene.cameras[static_cast<size_t>(panel.jumpToCamera)]);
+        panel.jumpToCamera = -1;
+      }
+      ImGui::Render();
+
+      int width = 0, height = 0;
+      glfwGetFramebufferSize(window, &width, &height);
+      if (width > 0 && height > 0) {
+        FrameSettings settings;
+        settings.clipFromWorld = clipFromWorld(camera, static_cast<double>(width) / height, scene);
+        settings.width = width;
+        settings.height = height;
+        settings.exposure = panel.exposure;
+        settings.wireframe = panel.wireframe;
+        renderer.draw(settings);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        const bool last = options.frames > 0 && frame >= options.frames;
+        std::string shot;
+        if (panel.screenshotRequested) shot = screenshotName(scene);
+        if (last && !options.screenshot.empty()) shot = options.screenshot;
+        if (!shot.empty()) {
+          panel.screenshotRequested = false;
+          try {
+            writePng(shot, readFramebuffer(width, height, GL_BACK));  // before the swap
+            std::cout << "screenshot: " << shot << std::endl;
+            panel.lastScreenshot = shot;
+          } catch (const std::exception& e) {  // a failed screenshot must not end the walk
+            std::cerr << "walkrad view: " << e.what() << "\n";
+            panel.lastScreenshot = "(failed) " + shot;
+            if (last) exitCode = 1;
+          }
+        }
+      }
+      glfwSwapBuffers(window);
+      if (options.frames > 0 && frame >= options.frames) break;
+    }
+  }
+  glfwDestroyWindow(window);
+  return exitCode;
+}
+
+}  // namespace app

@@ -1,0 +1,20 @@
+// `walkrad view`: the walkthrough window (GLFW + Dear ImGui).
+#pragma once
+
+#include <string>
+
+namespace app {
+
+struct ViewOptions {
+  std::string scene;
+  std::string camera;      // empty: the scene's default
+  int width = 1280, height = 720;
+  int frames = 0;          // > 0: close after this many frames (scripts, tests)
+  std::string screenshot;  // with `frames`: save the last frame here
+};
+
+// Runs the window until it is closed; returns the process exit code, having printed one line on
+// stderr for any failure (2 for bad input, 1 when no window can be opened).
+int runView(const ViewOptions& options);
+
+}  // namespace app

@@ -1,0 +1,59 @@
+// Every way a scene file can be refused, in one table, so tests check ids rather than wording.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace engine {
+
+// X(id, what the user is told)
+#define WALKRAD_SCENE_DIAGNOSTICS(X)                                                  \
+  X(FileUnreadable, "cannot read the file")                                           \
+  X(NotJson, "not valid JSON")                                                        \
+  X(WrongFormat, "unsupported format (expected \"walkrad-scene/1\")")               \
+  X(MissingField, "missing required field")                                           \
+  X(WrongType, "wrong type")                                                          \
+  X(UnknownKey, "unknown key")                                                        \
+  X(NotFinite, "not a finite number")                                                 \
+  X(OutOfRange, "value out of range")                                                 \
+  X(UnknownUnits, "unknown units (use m, cm, mm, in or ft)")                          \
+  X(UnknownAxis, "unknown axis (use x, y or z)")                                      \
+  X(UnknownTaper, "unknown taper kind (use none, linear or radial)")                  \
+  X(TooFewPoints, "fewer than 3 points")                                              \
+  X(Degenerate, "degenerate polygon (repeated points or no area)")                    \
+  X(NotConvex, "profile is not convex")                                               \
+  X(SelfIntersecting, "polygon crosses itself")                                       \
+  X(EmptySweep, "`from` must be less than `to`")                                      \
+  X(UnknownMaterial, "unknown material")                                              \
+  X(DuplicateName, "duplicate object name")                                           \
+  X(UnknownFace, "no such face on this solid")                                        \
+  X(HoleOutsideFace, "hole is not strictly inside its face")                          \
+  X(HolesTouch, "holes touch or overlap")                                             \
+  X(PatchTooSmall, "patch size too small for the scene (over 100000 patches per edge)") \
+  X(BadCamera, "camera looks nowhere (position equals look_at, or up is parallel to the view)")
+
+enum class Diag {
+#define WALKRAD_DIAG_ID(id, text) id,
+  WALKRAD_SCENE_DIAGNOSTICS(WALKRAD_DIAG_ID)
+#undef WALKRAD_DIAG_ID
+};
+
+// The user-facing text of a diagnostic.
+const char* describe(Diag diag);
+
+// A scene refused: where (file and JSON path, or file:line:column for syntax) and why.
+// what() is the one line to print: "FILE: PATH: problem: detail".
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(Diag diag, std::string file, std::string place, std::string detail = {});
+
+  Diag diag() const { return diag_; }
+  const std::string& file() const { return file_; }
+  const std::string& place() const { return place_; }
+
+ private:
+  Diag diag_;
+  std::string file_, place_;
+};
+
+}  // namespace engine

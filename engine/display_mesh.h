@@ -1,0 +1,33 @@
+// What the display draws: triangles with per-vertex linear radiance (Gouraud shading), and the
+// element edges for the wireframe. Until the radiosity solver exists the radiance is the
+// placeholder "emission plus reflectance under the ambient term" of radiosity/ambient.h.
+#pragma once
+
+#include "engine/scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace engine {
+
+struct DisplayMesh {
+  std::vector<glm::vec3> positions;  // per vertex, world coordinates
+  std::vector<glm::vec3> radiance;   // per vertex, linear RGB
+  std::vector<float> area;           // per vertex: a third of the area of its triangles
+  std::vector<uint32_t> triangles;   // 3 indices per triangle, counter-clockwise from the front
+  std::vector<uint32_t> edges;       // 2 indices per element edge, each edge once
+
+  size_t triangleCount() const { return triangles.size() / 3; }
+};
+
+// Meshes every surface (ear clipping, no Steiner points) and shades it with its emission plus
+// its reflectance times the scene's ambient radiance, returned in `ambient` when not null.
+DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambient = nullptr);
+
+// An exposure that maps the area-weighted log-average luminance of the mesh to `key` (Reinhard
+// et al. 2002), so small bright emitters do not darken the picture. 1 for an empty mesh.
+double autoExposure(const DisplayMesh& mesh, double key = 0.25);
+
+}  // namespace engine

@@ -1,0 +1,138 @@
+#include "engine/json_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+namespace engine {
+
+namespace {
+
+const char* typeName(const Json& value) {
+  if (value.is_number()) return "a number";
+  return value.type_name();
+}
+
+std::string rangeText(double lo, double hi) {
+  std::ostringstream s;
+  s << "expected " << lo << " to " << hi;
+  return s.str();
+}
+
+}  // namespace
+
+std::string child(const std::string& path, std::string_view key) {
+  const bool identifier = !key.empty() && !std::isdigit(static_cast<unsigned char>(key.front())) &&
+                          std::all_of(key.begin(), key.end(), [](char c) {
+                            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                          });
+  if (identifier) return path.empty() ? std::string(key) : path + "." + std::string(key);
+  return path + "[\"" + std::string(key) + "\"]";
+}
+
+std::string child(const std::string& path, size_t index) {
+  return path + "[" + std::to_string(index) + "]";
+}
+
+void JsonReader::fail(Diag diag, const std::string& path, std::string detail) const {
+  throw SceneError(diag, file_, path.empty() ? "(top level)" : path, std::move(detail));
+}
+
+Json JsonReader::parse(std::string_view text) const {
+  try {
+    return Json::parse(text.begin(), text.end());
+  } catch (const Json::parse_error& e) {
+    // Turn the byte offset into a line and column.
+    const size_t offset = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
+    size_t line = 1, column = 1;
+    for (size_t i = 0; i < offset; ++i) {
+      if (text[i] == '\n') ++line, column = 1;
+      else ++column;
+    }
+    std::string what = e.what();
+    if (const size_t colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
+    throw SceneError(Diag::NotJson, file_, ":" + std::to_string(line) + ":" + std::to_string(column), what);
+  } catch (const Json::exception& e) {  // e.g. a number too large for a double
+    std::string what = e.what();
+    if (const size_t bracket = what.find("] "); bracket != std::string::npos) what = what.substr(bracket + 2);
+    throw SceneError(Diag::NotJson, file_, "", what);
+  }
+}
+
+void JsonReader::expectObject(const Json& value, const std::string& path) const {
+  if (!value.is_object())
+    fail(Diag::WrongType, path, std::string("expected an object, found ") + typeName(value));
+}
+
+void JsonReader::expectArray(const Json& value, const std::string& path) const {
+  if (!value.is_array())
+    fail(Diag::WrongType, path, std::string("expected an array, found ") + typeName(value));
+}
+
+void JsonReader::allowOnly(const Json& object, const std::string& path,
+                           std::initializer_list<std::string_view> allowed) const {
+  for (const auto& item : object.items())
+    if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
+      fail(Diag::UnknownKey, child(path, item.key()));
+}
+
+const Json& JsonReader::required(const Json& object, const std::string& path, const char* key) const {
+  const auto found = object.find(key);
+  if (found == object.end()) fail(Diag::MissingField, child(path, key));
+  return *found;
+}
+
+double JsonReader::number(const Json& value, const std::string& path, double lo, double hi) const {
+  // nlohmann reads NaN and Infinity as null; a string "nan" is caught as the wrong type.
+  if (value.is_null()) fail(Diag::NotFinite, path, "null (NaN or infinity?)");
+  if (!value.is_number())
+    fail(Diag::WrongType, path, std::string("expected a number, found ") + typeName(value));
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) fail(Diag::NotFinite, path);
+  if (x < lo || x > hi) fail(Diag::OutOfRange, path, value.dump() + ", " + rangeText(lo, hi));
+  return x;
+}
+
+int JsonReader::integer(const Json& value, const std::string& path, int lo, int hi) const {
+  const double x = number(value, path, lo, hi);
+  if (x != std::floor(x)) fail(Diag::WrongType, path, "expected a whole number, found " + value.dump());
+  return static_cast<int>(x);
+}
+
+bool JsonReader::boolean(const Json& value, const std::string& path) const {
+  if (!value.is_boolean())
+    fail(Diag::WrongType, path, std::string("expected true or false, found ") + typeName(value));
+  return value.get<bool>();
+}
+
+std::string JsonReader::string(const Json& value, const std::string& path) const {
+  if (!value.is_string())
+    fail(Diag::WrongType, path, std::string("expected a string, found ") + typeName(value));
+  return value.get<std::string>();
+}
+
+glm::dvec3 JsonReader::vec3(const Json& value, const std::string& path, double lo, double hi) const {
+  if (!value.is_array() || value.size() != 3)
+    fail(Diag::WrongType, path, "expected an array of 3 numbers, found " + std::string(typeName(value)));
+  return {number(value[0], child(path, 0), lo, hi), number(value[1], child(path, 1), lo, hi),
+          number(value[2], child(path, 2), lo, hi)};
+}
+
+mesher::Ring2 JsonReader::ring2(const Json& value, const std::string& path, double lo, double hi) const {
+  expectArray(value, path);
+  if (value.size() < 3)
+    fail(Diag::TooFewPoints, path, std::to_string(value.size()) + " given");
+  mesher::Ring2 ring;
+  ring.reserve(value.size());
+  for (size_t i = 0; i < value.size(); ++i) {
+    const Json& p = value[i];
+    const std::string at = child(path, i);
+    if (!p.is_array() || p.size() != 2)
+      fail(Diag::WrongType, at, "expected a point [a, b], found " + std::string(typeName(p)));
+    ring.push_back({number(p[0], child(at, 0), lo, hi), number(p[1], child(at, 1), lo, hi)});
+  }
+  return ring;
+}
+
+}  // namespace engine

@@ -1,0 +1,13 @@
+#version 330 core
+// Gouraud shading: radiance is computed per vertex (by the solver) and interpolated.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_radiance;
+
+uniform mat4 u_clipFromWorld;
+
+out vec3 v_radiance;
+
+void main() {
+  gl_Position = u_clipFromWorld * vec4(a_position, 1.0);
+  v_radiance = a_radiance;
+}
