@@ -146,9 +146,9 @@ class SceneParser {
     for (size_t i = 0; i < profile.size(); ++i)
       if (profile[i] == profile[(i + 1) % profile.size()])
         in_.fail(Diag::Degenerate, path, "point " + std::to_string(i) + " is repeated");
+    if (!mesher::isConvex(profile)) in_.fail(Diag::NotConvex, path);
     if (std::abs(mesher::signedArea(profile)) <= 1e-12 * size * size)
       in_.fail(Diag::Degenerate, path, "no area");
-    if (!mesher::isConvex(profile)) in_.fail(Diag::NotConvex, path);
   }
 
   Taper parseTaper(const Json& t, const std::string& path) const {

@@ -1,8 +1,10 @@
 #include "engine/solid_surfaces.h"
 
 #include "engine/diagnostics.h"
+#include "engine/json_reader.h"
 
 #include <glm/geometric.hpp>
+#include <numbers>
 
 #include <algorithm>
 #include <cmath>
@@ -94,13 +96,13 @@ void sinCosDegrees(double degrees, double& s, double& c) {
     c = sines[(turns + 1) % 4];
     return;
   }
-  const double r = degrees * M_PI / 180.0;
+  const double r = degrees * std::numbers::pi / 180.0;
   s = std::sin(r);
   c = std::cos(r);
 }
 
 std::string facePath(const Solid& solid, const std::string& face) {
-  return solid.jsonPath + ".faces[\"" + face + "\"]";
+  return child(child(solid.jsonPath, "faces"), face);
 }
 
 // Validates the holes of one face in the face's 2-D frame (spec: FACE).
@@ -108,9 +110,9 @@ void checkHoles(const Scene& scene, const Solid& solid, const SolidFace& face,
                 const std::vector<Hole>& holes) {
   const double scale = std::max(mesher::extent(face.ring2), 1e-300);
   const double margin = 1e-9 * scale;
-  const std::string base = facePath(solid, face.name) + ".holes";
+  const std::string base = child(facePath(solid, face.name), "holes");
   for (size_t h = 0; h < holes.size(); ++h) {
-    const std::string path = base + "[" + std::to_string(h) + "].polygon";
+    const std::string path = child(child(base, h), "polygon");
     const mesher::Ring2& hole = holes[h].polygon;
     if (!mesher::isSimple(hole)) throw SceneError(Diag::SelfIntersecting, scene.file, path);
     if (std::abs(mesher::signedArea(hole)) <= margin * margin)

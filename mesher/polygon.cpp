@@ -1,6 +1,7 @@
 #include "mesher/polygon.h"
 
 #include <glm/geometric.hpp>
+#include <numbers>
 
 #include <algorithm>
 #include <cmath>
@@ -83,7 +84,7 @@ bool isConvex(const Ring2& ring, double tolerance) {
     const Vec2 e0 = ring[(i + 1) % n] - ring[i], e1 = ring[(i + 2) % n] - ring[(i + 1) % n];
     angle += std::atan2(e0.x * e1.y - e0.y * e1.x, glm::dot(e0, e1));
   }
-  return std::abs(angle) < 2 * M_PI + 1e-6;
+  return std::abs(angle) < 2 * std::numbers::pi + 1e-6;
 }
 
 bool isSimple(const Ring2& ring) {

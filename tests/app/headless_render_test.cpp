@@ -1,0 +1,77 @@
+// Headless renders through OSMesa, checked on pixels.
+#include "app/gl/headless_render.h"
+
+#include "engine/display_mesh.h"
+#include "engine/scene_loader.h"
+#include "tests/app/pixel_probe.h"
+
+#include <gtest/gtest.h>
+
+namespace app {
+namespace {
+
+engine::Scene loadAsset(const char* name) { return engine::loadScene(std::string(WALKRAD_ASSETS) + "/" + name); }
+
+HeadlessImages render(const engine::Scene& scene, int width, int height, bool wireframe = false, bool linear = false) {
+  const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+  ViewCamera camera;
+  EXPECT_TRUE(chooseCamera(scene, "", camera));
+  return renderHeadless(scene, mesh, camera, width, height, static_cast<float>(engine::autoExposure(mesh)), wireframe, linear);
+}
+
+// The classic view: the red wall (x = 556) on the left, the green (x = 0) on the right.
+TEST(HeadlessRender, CornellBoxRedLeftGreenRight) {
+  const HeadlessImages images = render(loadAsset("cornell.json"), 320, 240);
+  ASSERT_EQ(images.color.width, 320);
+  ASSERT_EQ(images.color.height, 240);
+  writePng(std::string(WALKRAD_TEST_OUTPUT) + "/cornell-headless.png", images.color);
+  // The box fills the middle of a 4:3 image; its side walls lie 14-28% in from each edge.
+  const glm::dvec3 left = test::meanColor(images.color, 0.16, 0.26, 0.4, 0.6);
+  const glm::dvec3 right = test::meanColor(images.color, 0.74, 0.84, 0.4, 0.6);
+  const glm::dvec3 back = test::meanColor(images.color, 0.45, 0.55, 0.4, 0.6);
+  EXPECT_GT(left.r, 2 * left.g) << "left wall is not red";
+  EXPECT_GT(left.r, 2 * left.b);
+  // Olive rather than pure green: the ambient light is as warm as the lamp.
+  EXPECT_GT(right.g, 1.25 * right.r) << "right wall is not green";
+  EXPECT_GT(right.g, 2 * right.b);
+  EXPECT_GT(back.r + back.g + back.b, 150) << "back wall is dark";
+  // Outside the box, through the open front's margin, is the black background.
+  const glm::dvec3 corner = test::meanColor(images.color, 0.0, 0.05, 0.0, 0.05);
+  EXPECT_LT(corner.r + corner.g + corner.b, 1);
+  // The light in the ceiling is the brightest thing: white.
+  const glm::dvec3 light = test::meanColor(images.color, 0.48, 0.52, 0.13, 0.15);
+  EXPECT_GT(std::min({light.r, light.g, light.b}), 250);
+}
+
+// Linear output is radiance: in the furnace the placeholder is exact, E / (1 - rho) = 2.
+TEST(HeadlessRender, LinearFurnaceImageIsTheExactRadiance) {
+  const engine::Scene scene = loadAsset("furnace.json");
+  const engine::Material& m = scene.materials[scene.surfaces.front().material];
+  const double expected = m.emission.x / (1 - m.reflectance.x);
+  const HeadlessImages images = render(scene, 64, 48, false, true);
+  ASSERT_EQ(images.linear.pixels.size(), 64u * 48 * 3);
+  for (float v : images.linear.pixels) ASSERT_NEAR(v, expected, 1e-5 * expected);
+}
+
+TEST(HeadlessRender, WireframeDrawsWhiteEdges) {
+  const engine::Scene scene = loadAsset("cornell.json");
+  const HeadlessImages plain = render(scene, 320, 240);
+  const HeadlessImages wired = render(scene, 320, 240, true);
+  size_t changed = 0, white = 0;
+  for (size_t i = 0; i < plain.color.pixels.size(); i += 3) {
+    if (plain.color.pixels[i] != wired.color.pixels[i] || plain.color.pixels[i + 1] != wired.color.pixels[i + 1]) {
+      ++changed;
+      if (wired.color.pixels[i] == 255 && wired.color.pixels[i + 1] == 255 && wired.color.pixels[i + 2] == 255) ++white;
+    }
+  }
+  EXPECT_GT(changed, 300u);
+  EXPECT_EQ(white, changed);
+}
+
+TEST(HeadlessRender, SameSceneSamePixels) {
+  const engine::Scene scene = loadAsset("office.json");
+  EXPECT_EQ(render(scene, 160, 120).color.pixels, render(scene, 160, 120).color.pixels);
+}
+
+}  // namespace
+}  // namespace app

@@ -1,0 +1,71 @@
+#include "app/image/atomic_file.h"
+#include "app/image/image.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace app {
+namespace {
+
+const std::string kDir = WALKRAD_TEST_OUTPUT;
+
+std::string readAll(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+TEST(ImageIo, PngRoundTrip) {
+  ImageRgb8 image{3, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30, 40, 50, 60, 70, 80, 90}};
+  writePng(kDir + "/roundtrip.png", image);
+  const ImageRgb8 back = readPng(kDir + "/roundtrip.png");
+  EXPECT_EQ(back.width, 3);
+  EXPECT_EQ(back.height, 2);
+  EXPECT_EQ(back.pixels, image.pixels);
+}
+
+// Standard PFM: little-endian (negative scale) and the bottom row stored first.
+TEST(ImageIo, PfmStoresTheBottomRowFirst) {
+  ImageRgbF image{2, 2, {1, 2, 3, 4, 5, 6, /* bottom row: */ 7, 8, 9, 10, 11, 12}};
+  const std::string path = kDir + "/rows.pfm";
+  writePfm(path, image);
+  const std::string bytes = readAll(path);
+  ASSERT_EQ(bytes.rfind("PF\n2 2\n-1.0\n", 0), 0u);
+  float first = 0;
+  std::memcpy(&first, bytes.data() + std::string("PF\n2 2\n-1.0\n").size(), sizeof first);
+  EXPECT_EQ(first, 7);
+  EXPECT_EQ(readPfm(path).pixels, image.pixels);
+}
+
+TEST(ImageIo, AFailedWriteLeavesTheOldFileAndNoTemporary) {
+  const std::string path = kDir + "/keep.txt";
+  writeFileAtomically(path, "old");
+  // A directory in place of the temporary's folder cannot be written: use a missing folder.
+  EXPECT_THROW(writeFileAtomically(kDir + "/missing/keep.txt", "new"), std::runtime_error);
+  EXPECT_EQ(readAll(path), "old");
+  writeFileAtomically(path, "new");
+  EXPECT_EQ(readAll(path), "new");
+  for (const auto& entry : std::filesystem::directory_iterator(kDir))
+    EXPECT_EQ(entry.path().filename().string().find("keep.txt.tmp"), std::string::npos);
+}
+
+TEST(ImageIo, RenamingOntoADirectoryFailsCleanly) {
+  const std::string path = kDir + "/a-directory";
+  std::filesystem::create_directories(path);
+  EXPECT_THROW(writePng(path, ImageRgb8{1, 1, {0, 0, 0}}), std::runtime_error);
+  EXPECT_TRUE(std::filesystem::is_directory(path));
+}
+
+TEST(ImageIo, ReadingGarbageThrows) {
+  writeFileAtomically(kDir + "/garbage.png", "not a png");
+  EXPECT_THROW(readPng(kDir + "/garbage.png"), std::runtime_error);
+  EXPECT_THROW(readPfm(kDir + "/garbage.png"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace app

@@ -1,0 +1,36 @@
+// Checks the screenshot that the window test took under Xvfb: the Cornell box as the headless
+// render shows it, and the ImGui panel drawn over it.
+#include "app/image/image.h"
+#include "tests/app/pixel_probe.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+namespace app {
+namespace {
+
+TEST(WindowScreenshot, ShowsTheCornellBoxAndThePanel) {
+  const char* path = std::getenv("WALKRAD_WINDOW_PNG");
+  ASSERT_NE(path, nullptr);
+  const ImageRgb8 image = readPng(path);
+  ASSERT_EQ(image.width, 1280);
+  ASSERT_EQ(image.height, 720);
+  // 16:9 with a 39.3 degree vertical field: the side walls span 23-33% and 67-77% of the width
+  // (the panel covers the left wall's left part).
+  const glm::dvec3 left = test::meanColor(image, 0.30, 0.33, 0.45, 0.55);
+  const glm::dvec3 right = test::meanColor(image, 0.68, 0.75, 0.45, 0.55);
+  EXPECT_GT(left.r, 2 * left.g) << "left wall is not red";
+  EXPECT_GT(right.g, 1.25 * right.r) << "right wall is not green";
+  // The panel sits at the top left over the black background: its text makes bright pixels.
+  size_t bright = 0, total = 0;
+  for (int y = 15; y < 200; ++y)
+    for (int x = 15; x < 360; ++x, ++total) {
+      const uint8_t* p = &image.pixels[(static_cast<size_t>(y) * 1280 + static_cast<size_t>(x)) * 3];
+      if (p[0] + p[1] + p[2] > 400) ++bright;
+    }
+  EXPECT_GT(bright, total / 100) << "no panel text";
+}
+
+}  // namespace
+}  // namespace app

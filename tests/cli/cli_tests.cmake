@@ -1,0 +1,51 @@
+# spec/cli.md: exit 0 on success, 2 for bad input with a one-line reason naming file and place,
+# 1 for other failures.
+set(expect ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_exit.cmake)
+set(cli_dir ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+set(out ${WALKRAD_TEST_OUTPUT})
+
+function(walkrad_cli_test name exit)
+  cmake_parse_arguments(T "" "STDERR;STDOUT;FILE;NO_FILE" "ARGS" ${ARGN})
+  # add_test splits on ';', so the command's words travel joined by '|'.
+  string(JOIN "|" words $<TARGET_FILE:walkrad> ${T_ARGS})
+  set(defs -DEXIT=${exit} "-DCOMMAND=${words}")
+  if(T_STDERR)
+    list(APPEND defs "-DSTDERR_REGEX=${T_STDERR}")
+  endif()
+  if(T_STDOUT)
+    list(APPEND defs "-DSTDOUT_REGEX=${T_STDOUT}")
+  endif()
+  if(T_FILE)
+    list(APPEND defs "-DEXPECT_FILE=${T_FILE}")
+  endif()
+  if(T_NO_FILE)
+    list(APPEND defs "-DEXPECT_NO_FILE=${T_NO_FILE}")
+  endif()
+  add_test(NAME cli.${name} COMMAND ${CMAKE_COMMAND} ${defs} -P ${expect})
+  set_tests_properties(cli.${name} PROPERTIES ENVIRONMENT LP_NUM_THREADS=1)
+endfunction()
+
+walkrad_cli_test(help 0 ARGS --help STDOUT "render.*view")
+walkrad_cli_test(render_help 0 ARGS render --help STDOUT "--wireframe")
+walkrad_cli_test(no_subcommand 2 ARGS STDERR "^walkrad: ")
+walkrad_cli_test(unknown_flag 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png --shiny
+                 STDERR "^walkrad: .*--shiny")
+walkrad_cli_test(bad_width 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png --width 0
+                 STDERR "^walkrad: .*width")
+walkrad_cli_test(missing_scene 2 ARGS render ${out}/no-such-scene.json --out ${out}/missing.png
+                 STDERR "no-such-scene.json: cannot read the file" NO_FILE ${out}/missing.png)
+walkrad_cli_test(non_convex_profile 2 ARGS render ${cli_dir}/bad_profile.json --out ${out}/bad.png
+                 STDERR "bad_profile.json: objects\\[0\\]\\.solids\\[0\\]\\.profile: profile is not convex$"
+                 NO_FILE ${out}/bad.png)
+walkrad_cli_test(truncated_scene 2 ARGS render ${cli_dir}/truncated.json --out ${out}/trunc.png
+                 STDERR "truncated.json:4:1: not valid JSON")
+walkrad_cli_test(unknown_camera 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cam.png --camera nope
+                 STDERR "cornell.json: cameras: no camera named \"nope\"")
+walkrad_cli_test(view_bad_scene 2 ARGS view ${cli_dir}/bad_profile.json STDERR "profile is not convex")
+walkrad_cli_test(nothing_to_write 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json STDERR "--out")
+walkrad_cli_test(unwritable_output 1 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/no/such/dir/x.png
+                 STDERR "x.png: cannot create")
+walkrad_cli_test(render_all_outputs 0
+                 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-cornell.png
+                      --linear ${out}/cli-cornell.pfm --stats ${out}/cli-cornell.json --width 200 --height 150 --wireframe
+                 FILE ${out}/cli-cornell.pfm)

@@ -1,0 +1,129 @@
+#include "mesher/triangulate.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <numbers>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+namespace mesher {
+namespace {
+
+std::vector<Vec2> allPoints(const PolygonWithHoles& p) {
+  std::vector<Vec2> points(p.outer);
+  for (const Ring2& h : p.holes) points.insert(points.end(), h.begin(), h.end());
+  return points;
+}
+
+double polygonArea(const PolygonWithHoles& p) {
+  double area = std::abs(signedArea(p.outer));
+  for (const Ring2& h : p.holes) area -= std::abs(signedArea(h));
+  return area;
+}
+
+// The triangles tile the polygon: counter-clockwise, summing to its area, using every point,
+// and no point lies strictly inside any triangle.
+void expectTiling(const PolygonWithHoles& p) {
+  const auto triangles = triangulate(p);
+  const std::vector<Vec2> points = allPoints(p);
+  double area = 0;
+  std::set<uint32_t> used;
+  for (const auto& t : triangles) {
+    const double a = 0.5 * orient2(points[t[0]], points[t[1]], points[t[2]]);
+    EXPECT_GT(a, 0);
+    area += a;
+    used.insert(t.begin(), t.end());
+    for (uint32_t i = 0; i < points.size(); ++i) {
+      if (points[i] == points[t[0]] || points[i] == points[t[1]] || points[i] == points[t[2]]) continue;
+      const bool inside = orient2(points[t[0]], points[t[1]], points[i]) > 0 &&
+                          orient2(points[t[1]], points[t[2]], points[i]) > 0 &&
+                          orient2(points[t[2]], points[t[0]], points[i]) > 0;
+      EXPECT_FALSE(inside) << "point " << i << " inside a triangle";
+    }
+  }
+  EXPECT_NEAR(area, polygonArea(p), 1e-9 * polygonArea(p));
+  EXPECT_EQ(used.size(), points.size());
+  EXPECT_EQ(triangles.size(), points.size() - 2 + 2 * p.holes.size());
+}
+
+TEST(Triangulate, ConvexPolygonEitherWinding) {
+  Ring2 hexagon;
+  for (int i = 0; i < 6; ++i) hexagon.push_back({std::cos(i * std::numbers::pi / 3), std::sin(i * std::numbers::pi / 3)});
+  expectTiling({hexagon, {}});
+  expectTiling({Ring2(hexagon.rbegin(), hexagon.rend()), {}});
+}
+
+TEST(Triangulate, ConcaveComb) {
+  expectTiling({{{0, 0}, {5, 0}, {5, 3}, {4, 3}, {4, 1}, {3, 1}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}, {}});
+}
+
+TEST(Triangulate, CollinearPointsOnEdgesAreKept) {
+  expectTiling({{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {0, 1}}, {}});
+}
+
+TEST(Triangulate, WallWithWindowAndDoor) {
+  expectTiling({{{0, 0}, {240, 0}, {240, 96}, {0, 96}},
+                {{{30, 40}, {30, 80}, {66, 80}, {66, 40}}, {{100, 0.5}, {136, 0.5}, {136, 84}, {100, 84}}}});
+}
+
+TEST(Triangulate, HolesSharingTheRightmostXAndAligned) {
+  expectTiling({{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                {{{2, 2}, {4, 2}, {4, 4}, {2, 4}}, {{2, 6}, {4, 6}, {4, 8}, {2, 8}}, {{6, 2}, {8, 2}, {8, 8}, {6, 8}}}});
+}
+
+// Random convex outer polygons with a grid of random disjoint convex holes.
+TEST(Triangulate, RandomPolygonsWithHolesTileExactly) {
+  std::mt19937 random(20261121);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int trial = 0; trial < 300; ++trial) {
+    PolygonWithHoles p;
+    const int sides = 3 + trial % 9;
+    const double radius = 1 + 100 * unit(random);
+    const Vec2 center{1e3 * (unit(random) - 0.5), 1e3 * (unit(random) - 0.5)};
+    for (int i = 0; i < sides; ++i) {
+      const double a = 2 * std::numbers::pi * (i + 0.3 * unit(random)) / sides;
+      p.outer.push_back(center + radius * Vec2{std::cos(a), std::sin(a)});
+    }
+    // Holes in the cells of a square grid inside the largest circle about the centre.
+    double clearance = radius;
+    for (int i = 0; i < sides; ++i) {
+      const Vec2 a = p.outer[static_cast<size_t>(i)], b = p.outer[static_cast<size_t>((i + 1) % sides)];
+      clearance = std::min(clearance, orient2(a, b, center) / glm::length(b - a));
+    }
+    const double inner = 0.7 * clearance;
+    const int cells = trial % 4;
+    for (int cx = 0; cx < cells; ++cx)
+      for (int cy = 0; cy < cells; ++cy) {
+        if (unit(random) < 0.3) continue;
+        const double cell = 2 * inner / cells;
+        const Vec2 c = center + Vec2{-inner + (cx + 0.5) * cell, -inner + (cy + 0.5) * cell};
+        Ring2 hole;
+        const int holeSides = 3 + static_cast<int>(unit(random) * 5);
+        for (int i = 0; i < holeSides; ++i) {
+          const double a = 2 * std::numbers::pi * (i + 0.5 * unit(random)) / holeSides;
+          hole.push_back(c + 0.4 * cell * Vec2{std::cos(a), std::sin(a)});
+        }
+        if (trial % 2) std::reverse(hole.begin(), hole.end());
+        p.holes.push_back(hole);
+      }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    expectTiling(p);
+  }
+}
+
+TEST(Triangulate, SameInputSameTriangles) {
+  const PolygonWithHoles p{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{2, 2}, {4, 2}, {4, 4}, {2, 4}}}};
+  EXPECT_EQ(triangulate(p), triangulate(p));
+}
+
+TEST(Triangulate, DegenerateInputEndsWithoutHanging) {
+  EXPECT_TRUE(triangulate({{{0, 0}, {1, 0}}, {}}).empty());
+  EXPECT_TRUE(triangulate({{{0, 0}, {1, 0}, {2, 0}, {3, 0}}, {}}).empty());  // no area
+  const auto bowtie = triangulate({{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}});
+  EXPECT_LE(bowtie.size(), 2u);
+}
+
+}  // namespace
+}  // namespace mesher
