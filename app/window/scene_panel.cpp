@@ -17,7 +17,7 @@ void objectList(const engine::Scene& scene) {
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const engine::Object& o = scene.objects[i];
     ImGui::Text("%s", o.name.c_str());
-    ImGui::SameLine(170);
+    ImGui::SameLine(150);
     ImGui::TextDisabled("%zu solids, %d surfaces%s", o.solids.size(), surfacesOf[i], o.movable ? "" : ", fixed");
   }
   ImGui::EndChild();
@@ -34,7 +34,7 @@ void cameraList(const engine::Scene& scene, PanelState& state) {
 
 void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh, PanelState& state) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("walkrad");
   ImGui::Text("%s (%s)", std::filesystem::path(scene.file).filename().c_str(), scene.units.c_str());
   ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Shading: emission + reflectance x ambient.");

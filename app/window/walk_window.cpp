@@ -122,6 +122,8 @@ int runView(const ViewOptions& options) {
     return 1;
   }
   glfwSetScrollCallback(window, onScroll);  // before ImGui installs and chains its callbacks
+  // A key pressed and released between two frames still reads as pressed once (F12, taps).
+  glfwSetInputMode(window, GLFW_STICKY_KEYS, GLFW_TRUE);
 
   int exitCode = 0;
   {
