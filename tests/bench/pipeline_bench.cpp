@@ -1,0 +1,82 @@
+// Speed of the path from a scene file to pixels: loading, display meshing, one headless frame.
+// Run: build/tests/walkrad_bench (figures in docs/BENCHMARKS.md).
+#include "app/gl/osmesa_context.h"
+#include "app/gl/scene_renderer.h"
+#include "app/view/view_camera.h"
+#include "engine/display_mesh.h"
+#include "engine/scene_loader.h"
+
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace {
+
+const char* const kScenes[] = {"cornell.json", "office.json", "kitchen.json"};
+
+std::string assetText(const char* name) {
+  std::ifstream file(std::string(WALKRAD_ASSETS) + "/" + name);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+void loadScene(benchmark::State& state) {
+  const char* name = kScenes[state.range(0)];
+  const std::string text = assetText(name);
+  size_t surfaces = 0;
+  for (auto _ : state) {
+    const engine::Scene scene = engine::parseScene(text, name);
+    surfaces = scene.surfaces.size();
+    benchmark::DoNotOptimize(scene.surfaces.data());
+  }
+  state.SetLabel(name);
+  state.counters["surfaces"] = static_cast<double>(surfaces);
+  state.counters["surfaces/s"] = benchmark::Counter(static_cast<double>(surfaces), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(loadScene)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+void placeholderDisplay(benchmark::State& state) {
+  const char* name = kScenes[state.range(0)];
+  const engine::Scene scene = engine::parseScene(assetText(name), name);
+  size_t triangles = 0;
+  for (auto _ : state) {
+    const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+    triangles = mesh.triangleCount();
+    benchmark::DoNotOptimize(mesh.triangles.data());
+  }
+  state.SetLabel(name);
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+BENCHMARK(placeholderDisplay)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+// One frame as `walkrad render` draws it (context and upload done once), read back to memory.
+void headlessFrame(benchmark::State& state) {
+  const char* name = kScenes[state.range(0)];
+  const int width = 640, height = 480;
+  const engine::Scene scene = engine::parseScene(assetText(name), name);
+  const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+  const app::OsmesaContext context(width, height);
+  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&app::OsmesaContext::procAddress)))
+    throw std::runtime_error("no GL");
+  app::SceneRenderer renderer;
+  renderer.upload(mesh);
+  app::ViewCamera camera;
+  app::chooseCamera(scene, "", camera);
+  app::FrameSettings frame;
+  frame.clipFromWorld = app::clipFromWorld(camera, static_cast<double>(width) / height, scene);
+  frame.width = width;
+  frame.height = height;
+  frame.exposure = static_cast<float>(engine::autoExposure(mesh));
+  frame.wireframe = state.range(1) != 0;
+  for (auto _ : state) {
+    renderer.draw(frame);
+    benchmark::DoNotOptimize(app::readFramebuffer(width, height, GL_FRONT).pixels.data());
+  }
+  state.SetLabel(std::string(name) + (frame.wireframe ? " wireframe" : ""));
+}
+BENCHMARK(headlessFrame)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+
+}  // namespace
