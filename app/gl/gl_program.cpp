@@ -9,6 +9,21 @@ namespace app {
 
 namespace {
 
+// Throws with the info log when a shader or program `id` failed its `status` check; `what` names
+// it in the message. `getStatus`/`getLog`/`destroy` are the glGet*iv, glGet*InfoLog and glDelete*
+// of its kind.
+template <typename GetStatus, typename GetLog, typename Destroy>
+void checkStatus(GLuint id, GLenum status, GetStatus getStatus, GetLog getLog, Destroy destroy,
+                 const std::string& what) {
+  GLint ok = 0;
+  getStatus(id, status, &ok);
+  if (ok) return;
+  char log[2048] = {};
+  getLog(id, sizeof log, nullptr, log);
+  destroy(id);
+  throw std::runtime_error(what + ": " + log);
+}
+
 GLuint compile(GLenum stage, std::string_view file) {
   const std::string_view text = shaders::source(file);
   if (text.empty()) throw std::runtime_error("no embedded shader named " + std::string(file));
@@ -17,14 +32,7 @@ GLuint compile(GLenum stage, std::string_view file) {
   const auto size = static_cast<GLint>(text.size());
   glShaderSource(shader, 1, &data, &size);
   glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error(std::string(file) + ": " + log);
-  }
+  checkStatus(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader, std::string(file));
   return shader;
 }
 
@@ -39,14 +47,8 @@ GlProgram::GlProgram(std::string_view vertexFile, std::string_view fragmentFile)
   glLinkProgram(id_);
   glDeleteShader(vertex);
   glDeleteShader(fragment);
-  GLint ok = 0;
-  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetProgramInfoLog(id_, sizeof log, nullptr, log);
-    glDeleteProgram(id_);
-    throw std::runtime_error(std::string(vertexFile) + " + " + std::string(fragmentFile) + ": " + log);
-  }
+  checkStatus(id_, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram,
+              std::string(vertexFile) + " + " + std::string(fragmentFile));
 }
 
 GlProgram::~GlProgram() { glDeleteProgram(id_); }
