@@ -14,6 +14,7 @@ namespace engine {
   X(MissingField, "missing required field")                                           \
   X(WrongType, "wrong type")                                                          \
   X(UnknownKey, "unknown key")                                                        \
+  X(DuplicateKey, "key given twice in one object")                                    \
   X(NotFinite, "not a finite number")                                                 \
   X(OutOfRange, "value out of range")                                                 \
   X(UnknownUnits, "unknown units (use m, cm, mm, in or ft)")                          \

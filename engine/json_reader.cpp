@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <set>
+#include <vector>
 #include <sstream>
 
 namespace engine {
@@ -20,6 +22,63 @@ std::string rangeText(double lo, double hi) {
   return s.str();
 }
 
+// Watches the parser's events to refuse an object that names a key twice (nlohmann keeps the
+// last silently), reporting the JSON path of the second one.
+class DuplicateKeyGuard {
+ public:
+  explicit DuplicateKeyGuard(const std::string& file) : file_(file) {}
+
+  bool operator()(int, Json::parse_event_t event, const Json& parsed) {
+    using Event = Json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        enterValue();
+        frames_.push_back(Frame{event == Event::array_start, {}, 0, 0, {}});
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        frames_.pop_back();
+        break;
+      case Event::key: {
+        Frame& object = frames_.back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys.insert(object.key).second)
+          throw SceneError(Diag::DuplicateKey, file_, pathTo(frames_.size()));
+        break;
+      }
+      case Event::value:
+        enterValue();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool isArray;
+    std::string key;   // objects: the key being read
+    size_t index = 0;  // arrays: the element being read
+    size_t next = 0;   // arrays: the index of the next element
+    std::set<std::string> keys;
+  };
+
+  // A value starts inside the innermost container: an array counts it as its next element.
+  void enterValue() {
+    if (!frames_.empty() && frames_.back().isArray) frames_.back().index = frames_.back().next++;
+  }
+
+  std::string pathTo(size_t depth) const {
+    std::string path;
+    for (size_t i = 0; i < depth; ++i)
+      path = frames_[i].isArray ? child(path, frames_[i].index) : child(path, frames_[i].key);
+    return path;
+  }
+
+  const std::string& file_;
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 std::string child(const std::string& path, std::string_view key) {
@@ -28,7 +87,12 @@ std::string child(const std::string& path, std::string_view key) {
                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
                           });
   if (identifier) return path.empty() ? std::string(key) : path + "." + std::string(key);
-  return path + "[\"" + std::string(key) + "\"]";
+  std::string quoted;
+  for (char c : key) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    quoted += c;
+  }
+  return path + "[\"" + quoted + "\"]";
 }
 
 std::string child(const std::string& path, size_t index) {
@@ -41,7 +105,7 @@ void JsonReader::fail(Diag diag, const std::string& path, std::string detail) co
 
 Json JsonReader::parse(std::string_view text) const {
   try {
-    return Json::parse(text.begin(), text.end());
+    return Json::parse(text.begin(), text.end(), DuplicateKeyGuard(file_));
   } catch (const Json::parse_error& e) {
     // Turn the byte offset into a line and column.
     const size_t offset = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());

@@ -28,7 +28,8 @@ class JsonReader {
   const std::string& file() const { return file_; }
   [[noreturn]] void fail(Diag diag, const std::string& path, std::string detail = {}) const;
 
-  // Parses text; syntax errors are reported as FILE:LINE:COLUMN.
+  // Parses text; syntax errors are reported as FILE:LINE:COLUMN, a key named twice in one
+  // object by its path.
   Json parse(std::string_view text) const;
 
   void expectObject(const Json& value, const std::string& path) const;

@@ -21,7 +21,10 @@ namespace {
 // Limits that make a value absurd rather than merely unusual.
 constexpr double kMaxLength = 1e6;     // any coordinate, in scene units
 constexpr double kMaxEmission = 1e6;   // radiance
+constexpr double kMinLength = 1e-9;   // shorter edges and sweeps are degenerate, in scene units
 constexpr int kMaxSlices = 256;
+constexpr size_t kMaxPolygonPoints = 1024;  // per profile or hole
+constexpr size_t kMaxHolesPerFace = 256;    // the display's hole bridging is quadratic in points
 constexpr double kMaxPatchesPerEdge = 1e5;
 
 class SceneParser {
@@ -128,6 +131,7 @@ class SceneParser {
     solid.from = in_.number(in_.required(s, path, "from"), child(path, "from"), -kMaxLength, kMaxLength);
     solid.to = in_.number(in_.required(s, path, "to"), child(path, "to"), -kMaxLength, kMaxLength);
     if (!(solid.from < solid.to)) in_.fail(Diag::EmptySweep, child(path, "to"));
+    if (solid.to - solid.from < kMinLength) in_.fail(Diag::Degenerate, child(path, "to"), "the sweep is shorter than 1e-9");
     if (const auto v = s.find("taper"); v != s.end()) solid.taper = parseTaper(*v, child(path, "taper"));
     if (const auto v = s.find("inward"); v != s.end()) solid.inward = in_.boolean(*v, child(path, "inward"));
     solid.material = materialRef(in_.required(s, path, "material"), child(path, "material"));
@@ -143,28 +147,40 @@ class SceneParser {
 
   void checkConvexProfile(const mesher::Ring2& profile, const std::string& path) const {
     const double size = mesher::extent(profile);
-    for (size_t i = 0; i < profile.size(); ++i)
-      if (profile[i] == profile[(i + 1) % profile.size()])
-        in_.fail(Diag::Degenerate, path, "point " + std::to_string(i) + " is repeated");
+    checkPolygonPoints(profile, path);
     if (!mesher::isConvex(profile)) in_.fail(Diag::NotConvex, path);
     if (std::abs(mesher::signedArea(profile)) <= 1e-12 * size * size)
       in_.fail(Diag::Degenerate, path, "no area");
   }
 
+  // Shared by profiles and holes: not too many points, none repeating its neighbour.
+  void checkPolygonPoints(const mesher::Ring2& polygon, const std::string& path) const {
+    if (polygon.size() > kMaxPolygonPoints)
+      in_.fail(Diag::OutOfRange, path, std::to_string(polygon.size()) + " points, at most " + std::to_string(kMaxPolygonPoints));
+    for (size_t i = 0; i < polygon.size(); ++i)
+      if (glm::length(polygon[(i + 1) % polygon.size()] - polygon[i]) < kMinLength)
+        in_.fail(Diag::Degenerate, path, "point " + std::to_string(i) + " repeats the next (closer than 1e-9)");
+  }
+
   Taper parseTaper(const Json& t, const std::string& path) const {
     in_.expectObject(t, path);
-    in_.allowOnly(t, path, {"kind", "scale", "slices", "both_ends"});
     Taper taper;
     const std::string kind = in_.string(in_.required(t, path, "kind"), child(path, "kind"));
     if (kind == "none") {
+      in_.allowOnly(t, path, {"kind"});
       taper.kind = TaperKind::None;
     } else if (kind == "linear") {
+      in_.allowOnly(t, path, {"kind", "scale"});
       taper.kind = TaperKind::Linear;
       taper.scale = in_.number(in_.required(t, path, "scale"), child(path, "scale"), 0, 1e3);
+      if (taper.scale > 0 && taper.scale < 1e-6)
+        in_.fail(Diag::OutOfRange, child(path, "scale"), "a scale below 1e-6 leaves a sliver; use 0 for an apex");
     } else if (kind == "radial") {
+      in_.allowOnly(t, path, {"kind", "slices", "both_ends"});
       taper.kind = TaperKind::Radial;
-      taper.slices = in_.integer(in_.required(t, path, "slices"), child(path, "slices"), 1, kMaxSlices);
       if (const auto v = t.find("both_ends"); v != t.end()) taper.bothEnds = in_.boolean(*v, child(path, "both_ends"));
+      const int fewest = taper.bothEnds ? 2 : 1;  // one band shrunk to a point at both ends is nothing
+      taper.slices = in_.integer(in_.required(t, path, "slices"), child(path, "slices"), fewest, kMaxSlices);
     } else {
       in_.fail(Diag::UnknownTaper, child(path, "kind"), "\"" + kind + "\"");
     }
@@ -181,14 +197,17 @@ class SceneParser {
     if (const auto v = f.find("holes"); v != f.end()) {
       const std::string holesPath = child(path, "holes");
       in_.expectArray(*v, holesPath);
+      if (v->size() > kMaxHolesPerFace)
+        in_.fail(Diag::OutOfRange, holesPath, std::to_string(v->size()) + " holes, at most " + std::to_string(kMaxHolesPerFace));
       for (size_t h = 0; h < v->size(); ++h) {
         const std::string holePath = child(holesPath, h);
         const Json& hole = (*v)[h];
         in_.expectObject(hole, holePath);
         in_.allowOnly(hole, holePath, {"polygon", "fill"});
         Hole parsed;
-        parsed.polygon = in_.ring2(in_.required(hole, holePath, "polygon"), child(holePath, "polygon"),
-                                   -kMaxLength, kMaxLength);
+        const std::string polygonPath = child(holePath, "polygon");
+        parsed.polygon = in_.ring2(in_.required(hole, holePath, "polygon"), polygonPath, -kMaxLength, kMaxLength);
+        checkPolygonPoints(parsed.polygon, polygonPath);
         if (const auto fill = hole.find("fill"); fill != hole.end())
           parsed.fillMaterial = materialRef(*fill, child(holePath, "fill"));
         face.holes.push_back(std::move(parsed));

@@ -214,14 +214,17 @@ void appendSolidSurfaces(const Scene& scene, uint32_t objectIndex, const Solid& 
     if (!exists) throw SceneError(Diag::UnknownFace, scene.file, facePath(solid, name));
   }
 
+  for (const SolidFace& face : faces)
+    if (!std::isfinite(face.normal.x + face.normal.y + face.normal.z))
+      throw SceneError(Diag::Degenerate, scene.file, solid.jsonPath, face.name + " has no direction");
   const Placement place = placementOf(scene.objects[objectIndex]);
   const double solidPatch = solid.patchSize.value_or(objectPatchSize.value_or(0));
   for (const SolidFace& face : faces) {
     const auto found = solid.faces.find(face.name);
     const FaceOverride none;
     const FaceOverride& over = found == solid.faces.end() ? none : found->second;
+    checkHoles(scene, solid, face, over.holes);  // even on an open face: a wrong hole is a mistake
     if (over.open) continue;
-    checkHoles(scene, solid, face, over.holes);
 
     Surface surface;
     surface.normal = glm::normalize(place.direction(face.normal));

@@ -72,11 +72,11 @@ bool isConvex(const Ring2& ring, double tolerance) {
   const size_t n = ring.size();
   if (n < 3) return false;
   const double sign = signedArea(ring) >= 0 ? 1.0 : -1.0;
-  const double scale = extent(ring);
-  const double slack = tolerance * scale * scale;
   for (size_t i = 0; i < n; ++i) {
-    const double turn = orient2(ring[i], ring[(i + 1) % n], ring[(i + 2) % n]) * sign;
-    if (turn < -slack) return false;
+    // The sine of the turn at each corner, so a small notch is caught however large the ring.
+    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
+    const double lengths = glm::length(b - a) * glm::length(c - b);
+    if (lengths > 0 && orient2(a, b, c) * sign < -tolerance * lengths) return false;
   }
   // A ring that winds around twice turns one way everywhere but is not convex.
   double angle = 0;

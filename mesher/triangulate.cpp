@@ -19,31 +19,19 @@ bool intoInterior(Vec2 prev, Vec2 v, Vec2 next, Vec2 target) {
   return !(cross(toPrev, d) >= 0 && cross(d, toNext) >= 0);
 }
 
-bool closedSegmentsMeet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double d1 = orient2(c, d, a), d2 = orient2(c, d, b);
-  const double d3 = orient2(a, b, c), d4 = orient2(a, b, d);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-    return true;
-  auto within = [](Vec2 p, Vec2 q, Vec2 r) {
-    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
-           r.y <= std::max(p.y, q.y);
-  };
-  return (d1 == 0 && within(c, d, a)) || (d2 == 0 && within(c, d, b)) ||
-         (d3 == 0 && within(a, b, c)) || (d4 == 0 && within(a, b, d));
-}
-
 // A closed boundary as indices into the point array.
 using Loop = std::vector<uint32_t>;
 
 struct Bridger {
   const std::vector<Vec2>& points;
+  double tolerance;  // a length: a bridge passing this close to an edge is taken to touch it
 
-  // True when segment m-v crosses no edge of `loop` other than edges ending at m or v.
+  // True when segment m-v stays clear of every edge of `loop` other than edges ending at m or v.
   bool clearOf(const Loop& loop, Vec2 m, Vec2 v) const {
     for (size_t e = 0; e < loop.size(); ++e) {
       const Vec2 a = points[loop[e]], b = points[loop[(e + 1) % loop.size()]];
       if (a == m || b == m || a == v || b == v) continue;
-      if (closedSegmentsMeet(m, v, a, b)) return false;
+      if (segmentDistance(m, v, a, b) <= tolerance) return false;
     }
     return true;
   }
@@ -83,7 +71,9 @@ struct Bridger {
   }
 };
 
-void clipEars(const std::vector<Vec2>& points, const Loop& loop,
+// `slack` is an area: points this close to a candidate ear count as inside it, so that a point
+// a rounding error outside an ear's edge (as on rotated input) does not let the ear through.
+void clipEars(const std::vector<Vec2>& points, const Loop& loop, double slack,
               std::vector<std::array<uint32_t, 3>>& triangles) {
   const size_t n = loop.size();
   std::vector<size_t> prev(n), next(n);
@@ -92,11 +82,11 @@ void clipEars(const std::vector<Vec2>& points, const Loop& loop,
 
   auto isEar = [&](size_t i) {
     const Vec2 a = at(prev[i]), b = at(i), c = at(next[i]);
-    if (orient2(a, b, c) <= 0) return false;
+    if (orient2(a, b, c) <= slack) return false;
     for (size_t j = next[next[i]]; j != prev[i]; j = next[j]) {
       const Vec2 p = at(j);
       if (p == a || p == b || p == c) continue;  // bridge copies of the corners
-      if (orient2(a, b, p) >= 0 && orient2(b, c, p) >= 0 && orient2(c, a, p) >= 0) return false;
+      if (orient2(a, b, p) >= -slack && orient2(b, c, p) >= -slack && orient2(c, a, p) >= -slack) return false;
     }
     return true;
   };
@@ -170,14 +160,17 @@ std::vector<std::array<uint32_t, 3>> triangulate(const PolygonWithHoles& polygon
     };
     return maxX(a) > maxX(b);
   });
-  const Bridger bridger{points};
+  // Tolerances relative to the polygon's size, a few hundred rounding errors wide.
+  const double size = extent(polygon.outer);
+  const double tolerance = 1e-13 * size;
+  const Bridger bridger{points, tolerance};
   for (size_t h = 0; h < holes.size(); ++h) {
     const std::vector<Loop> later(holes.begin() + static_cast<ptrdiff_t>(h) + 1, holes.end());
     bridger.join(boundary, holes[h], later);
   }
 
   triangles.reserve(boundary.size());
-  clipEars(points, boundary, triangles);
+  clipEars(points, boundary, tolerance * size, triangles);
   return triangles;
 }
 

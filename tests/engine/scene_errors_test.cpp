@@ -7,7 +7,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <functional>
+#include <numbers>
 #include <set>
 
 namespace engine {
@@ -111,6 +113,32 @@ const ErrorCase kCases[] = {
     {"camera field of view 180", [](Json& j) { j["cameras"]["default"]["fov_y"] = 180; }, Diag::OutOfRange, "cameras.default.fov_y"},
     {"camera position missing", [](Json& j) { j["cameras"]["default"].erase("position"); }, Diag::MissingField, "cameras.default.position"},
     {"cameras an array", [](Json& j) { j["cameras"] = Json::array(); }, Diag::WrongType, "cameras"},
+    {"profile with a shallow notch", [](Json& j) { box(j)["profile"] = {{0, 0}, {0.5, 1e-5}, {1, 0}, {1, 1}, {0, 1}}; },
+     Diag::NotConvex, "objects[1].solids[0].profile"},
+    {"profile points a hair apart", [](Json& j) { box(j)["profile"] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 1e-12}}; },
+     Diag::Degenerate, "objects[1].solids[0].profile"},
+    {"profile of too many points", [](Json& j) {
+       Json ring = Json::array();
+       for (int i = 0; i < 1025; ++i) ring.push_back({std::cos(i * 2 * std::numbers::pi / 1025), std::sin(i * 2 * std::numbers::pi / 1025)});
+       box(j)["profile"] = ring; },
+     Diag::OutOfRange, "objects[1].solids[0].profile"},
+    {"sweep thinner than a nanometre", [](Json& j) { box(j)["to"] = 1e-12; }, Diag::Degenerate, "objects[1].solids[0].to"},
+    {"linear taper to a sliver", [](Json& j) { box(j)["taper"] = {{"kind", "linear"}, {"scale", 1e-9}}; }, Diag::OutOfRange, "objects[1].solids[0].taper.scale"},
+    {"sphere of one slice", [](Json& j) { box(j)["taper"] = {{"kind", "radial"}, {"slices", 1}, {"both_ends", true}}; },
+     Diag::OutOfRange, "objects[1].solids[0].taper.slices"},
+    {"slices on a prism", [](Json& j) { box(j)["taper"] = {{"kind", "none"}, {"slices", -5}}; }, Diag::UnknownKey, "objects[1].solids[0].taper.slices"},
+    {"both_ends on a linear taper", [](Json& j) { box(j)["taper"] = {{"kind", "linear"}, {"scale", 0.5}, {"both_ends", true}}; },
+     Diag::UnknownKey, "objects[1].solids[0].taper.both_ends"},
+    {"face name with a quote", [](Json& j) { box(j)["faces"] = {{"a\"b", Json::object()}}; }, Diag::UnknownFace, "objects[1].solids[0].faces[\"a\\\"b\"]"},
+    {"bad hole in an open face", [](Json& j) { room(j)["faces"]["side 0"] = {{"open", true}, {"holes", {{{"polygon", {{5, 5}, {6, 5}, {6, 6}}}}}}}; },
+     Diag::HoleOutsideFace, "objects[0].solids[0].faces[\"side 0\"].holes[0].polygon"},
+    {"hole repeating a point", [](Json& j) { ceilingHoles(j)[0]["polygon"] = {{1, 1}, {2, 1}, {2, 1}, {2, 2}}; },
+     Diag::Degenerate, "objects[0].solids[0].faces.top.holes[0].polygon"},
+    {"too many holes", [](Json& j) {
+       Json holes = Json::array();
+       for (int i = 0; i < 257; ++i) holes.push_back({{"polygon", {{0.1 + 0.01 * i, 0.1}, {0.105 + 0.01 * i, 0.1}, {0.105 + 0.01 * i, 0.2}}}});
+       ceilingHoles(j) = holes; },
+     Diag::OutOfRange, "objects[0].solids[0].faces.top.holes"},
 };
 
 void PrintTo(const ErrorCase& c, std::ostream* out) { *out << c.name; }
@@ -148,6 +176,27 @@ TEST(SceneErrorsText, SyntaxErrorsNameLineAndColumn) {
     EXPECT_EQ(e.diag(), Diag::NotJson);
     EXPECT_EQ(e.place(), ":3:12");
     EXPECT_EQ(std::string(e.what()).rfind("broken.json:3:12: not valid JSON", 0), 0u) << e.what();
+  }
+}
+
+// nlohmann keeps the last of two equal keys; a scene naming one twice is refused instead.
+TEST(SceneErrorsText, KeysGivenTwiceAreRefusedWithTheirPath) {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"format": "walkrad-scene/1", "materials": {"white": {"reflectance": [1, 1, 1]}, "white": {"reflectance": [0, 0, 0]}}, "objects": []})",
+       "materials.white"},
+      {R"({"format": "walkrad-scene/1", "materials": {}, "objects": [{"name": "a", "solids": []}, {"name": "b", "name": "c", "solids": []}]})",
+       "objects[1].name"},
+      {R"({"format": "walkrad-scene/1", "format": "walkrad-scene/1"})", "format"},
+      {R"({"format": "walkrad-scene/1", "objects": [[0, {"x": 1}], [1, {"y": 2, "y": 3}]]})", "objects[1][1].y"},
+  };
+  for (const auto& [text, place] : cases) {
+    try {
+      parseScene(text, "twice.json");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.diag(), Diag::DuplicateKey) << e.what();
+      EXPECT_EQ(e.place(), place) << e.what();
+    }
   }
 }
 
@@ -191,7 +240,7 @@ TEST(SceneErrorsText, MissingFileAndDirectoryAreUnreadable) {
 
 // A test per way of breaking a scene: every diagnostic of the table is produced above.
 TEST(SceneErrorsText, EveryDiagnosticHasACase) {
-  std::set<Diag> covered{Diag::NotJson, Diag::FileUnreadable};  // the tests above
+  std::set<Diag> covered{Diag::NotJson, Diag::FileUnreadable, Diag::DuplicateKey};  // the tests below
   for (const ErrorCase& c : kCases) covered.insert(c.diag);
 #define WALKRAD_EXPECT_COVERED(id, text) EXPECT_TRUE(covered.count(Diag::id)) << #id " has no test";
   WALKRAD_SCENE_DIAGNOSTICS(WALKRAD_EXPECT_COVERED)
