@@ -4,6 +4,7 @@
 
 #include "mesher/polygon.h"
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -85,6 +86,9 @@ struct Surface {
   std::string face;          // "side 2", "top", "top hole 0 fill"
   std::string jsonPath;      // where its face is described, for diagnostics
   double patchSize = 0;      // largest initial patch edge, in scene units
+
+  // The surface's plane is dot(normal, p) = planeOffset().
+  double planeOffset() const { return outer.empty() ? 0 : glm::dot(normal, outer.front()); }
 };
 
 struct Scene {

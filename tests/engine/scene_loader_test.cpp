@@ -81,6 +81,18 @@ TEST(SceneLoader, ARoomSeenFromInsideHasInwardNormals) {
   EXPECT_NEAR(test::enclosedVolume(scene, "thing"), -6, 1e-12);
 }
 
+TEST(SceneLoader, EveryPointOfASurfaceLiesInItsPlane) {
+  Json j = test::baseScene();
+  j["objects"][1]["rotate_y"] = 27;
+  j["objects"][1]["solids"][0]["taper"] = {{"kind", "radial"}, {"slices", 3}};
+  const Scene scene = parse(j);
+  for (const Surface& s : scene.surfaces) {
+    for (const Vec3& p : s.outer) EXPECT_NEAR(glm::dot(p, s.normal), s.planeOffset(), 1e-12) << s.face;
+    for (const Ring3& h : s.holes)
+      for (const Vec3& p : h) EXPECT_NEAR(glm::dot(p, s.normal), s.planeOffset(), 1e-12) << s.face;
+  }
+}
+
 TEST(SceneLoader, OuterRingsRunCounterClockwiseAboutTheNormal) {
   const Scene scene = parse(test::baseScene());
   for (const Surface& s : scene.surfaces) {
