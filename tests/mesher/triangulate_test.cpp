@@ -1,10 +1,11 @@
 #include "mesher/triangulate.h"
 
-#include <glm/geometric.hpp>
+#include "tests/mesher/random_polygons.h"
+
 #include <gtest/gtest.h>
-#include <numbers>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -73,43 +74,11 @@ TEST(Triangulate, HolesSharingTheRightmostXAndAligned) {
                 {{{2, 2}, {4, 2}, {4, 4}, {2, 4}}, {{2, 6}, {4, 6}, {4, 8}, {2, 8}}, {{6, 2}, {8, 2}, {8, 8}, {6, 8}}}});
 }
 
-// Random convex outer polygons with a grid of random disjoint convex holes.
 TEST(Triangulate, RandomPolygonsWithHolesTileExactly) {
   std::mt19937 random(20261121);
-  std::uniform_real_distribution<double> unit(0, 1);
   for (int trial = 0; trial < 300; ++trial) {
-    PolygonWithHoles p;
-    const int sides = 3 + trial % 9;
-    const double radius = 1 + 100 * unit(random);
-    const Vec2 center{1e3 * (unit(random) - 0.5), 1e3 * (unit(random) - 0.5)};
-    for (int i = 0; i < sides; ++i) {
-      const double a = 2 * std::numbers::pi * (i + 0.3 * unit(random)) / sides;
-      p.outer.push_back(center + radius * Vec2{std::cos(a), std::sin(a)});
-    }
-    // Holes in the cells of a square grid inside the largest circle about the centre.
-    double clearance = radius;
-    for (int i = 0; i < sides; ++i) {
-      const Vec2 a = p.outer[static_cast<size_t>(i)], b = p.outer[static_cast<size_t>((i + 1) % sides)];
-      clearance = std::min(clearance, orient2(a, b, center) / glm::length(b - a));
-    }
-    const double inner = 0.7 * clearance;
-    const int cells = trial % 4;
-    for (int cx = 0; cx < cells; ++cx)
-      for (int cy = 0; cy < cells; ++cy) {
-        if (unit(random) < 0.3) continue;
-        const double cell = 2 * inner / cells;
-        const Vec2 c = center + Vec2{-inner + (cx + 0.5) * cell, -inner + (cy + 0.5) * cell};
-        Ring2 hole;
-        const int holeSides = 3 + static_cast<int>(unit(random) * 5);
-        for (int i = 0; i < holeSides; ++i) {
-          const double a = 2 * std::numbers::pi * (i + 0.5 * unit(random)) / holeSides;
-          hole.push_back(c + 0.4 * cell * Vec2{std::cos(a), std::sin(a)});
-        }
-        if (trial % 2) std::reverse(hole.begin(), hole.end());
-        p.holes.push_back(hole);
-      }
     SCOPED_TRACE("trial " + std::to_string(trial));
-    expectTiling(p);
+    expectTiling(test::randomPolygonWithHoles(random, trial));
   }
 }
 

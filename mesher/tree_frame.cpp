@@ -1,0 +1,79 @@
+#include "mesher/tree_frame.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mesher {
+
+namespace {
+
+// The unit direction of the longest outer edge, exact for axis-aligned edges.
+Vec2 longestEdgeDirection(const Ring2& outer) {
+  Vec2 best{1, 0};
+  double bestLength = -1;
+  for (size_t i = 0; i < outer.size(); ++i) {
+    const Vec2 d = outer[(i + 1) % outer.size()] - outer[i];
+    const double length = glm::length(d);
+    if (length > bestLength) bestLength = length, best = d;
+  }
+  if (best.y == 0) return {best.x > 0 ? 1.0 : -1.0, 0};
+  if (best.x == 0) return {0, best.y > 0 ? 1.0 : -1.0};
+  return best / bestLength;
+}
+
+double nextPowerOfTwo(double x) { return std::exp2(std::ceil(std::log2(x))); }
+
+}  // namespace
+
+Vec2 TreeFrame::toTree(Vec2 plane) const {
+  const Vec2 d = plane - origin;
+  Vec2 t{glm::dot(d, xAxis), glm::dot(d, yAxis())};
+  t *= scale;
+  t[shortAxis] *= stretch;
+  return t;
+}
+
+Vec2 TreeFrame::toPlane(Vec2 tree) const {
+  tree[shortAxis] /= stretch;
+  tree /= scale;
+  return origin + xAxis * tree.x + yAxis() * tree.y;
+}
+
+Vec2 TreeFrame::planePerTree() const {
+  Vec2 perUnit{1 / scale, 1 / scale};
+  perUnit[shortAxis] /= stretch;
+  return perUnit;
+}
+
+TreeFrame setupTreeFrame(const PolygonWithHoles& polygon, int maxDepth) {
+  TreeFrame frame;
+  frame.maxDepth = maxDepth;
+  frame.xAxis = longestEdgeDirection(polygon.outer);
+
+  // Extents along the turned axes (holes lie inside the outer ring).
+  Vec2 lo{INFINITY}, hi{-INFINITY};
+  for (const Vec2& p : polygon.outer) {
+    const Vec2 turned{glm::dot(p, frame.xAxis), glm::dot(p, frame.yAxis())};
+    lo = glm::min(lo, turned);
+    hi = glm::max(hi, turned);
+  }
+  frame.origin = frame.xAxis * lo.x + frame.yAxis() * lo.y;
+  const Vec2 extent = hi - lo;
+  const int longAxis = extent.x >= extent.y ? 0 : 1;
+  frame.shortAxis = 1 - longAxis;
+
+  const double root = std::exp2(maxDepth);
+  frame.scale = root / extent[longAxis];
+  const double shortScaled = extent[frame.shortAxis] * frame.scale;
+  frame.stretch = std::max(1.0, nextPowerOfTwo(shortScaled)) / shortScaled;
+  return frame;
+}
+
+int initialDepth(double longerExtent, double patchSize, int maxDepth) {
+  const double depth = std::ceil(std::log2(longerExtent / patchSize));
+  return static_cast<int>(std::clamp(depth, 0.0, static_cast<double>(maxDepth)));
+}
+
+}  // namespace mesher

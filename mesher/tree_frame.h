@@ -1,0 +1,33 @@
+// Setup of the tree (thesis section 5.1): the map from a polygon's plane coordinates into the
+// quadtree's integer square [0, 2^maxDepth]^2, and the initial depth from the patch size (5.2).
+#pragma once
+
+#include "mesher/polygon.h"
+#include "mesher/triangulate.h"
+
+namespace mesher {
+
+struct TreeFrame {
+  int maxDepth = 0;      // beta: the root square's edge is 2^beta, the smallest quadrant's 1
+  Vec2 origin{0};        // plane point that maps to the tree's (0, 0)
+  Vec2 xAxis{1, 0};      // unit plane direction of the tree's x axis: along the longest edge
+  double scale = 1;      // uniform scale that maps the longer extent onto the root square
+  double stretch = 1;    // extra scale of the shorter axis, up to its next power of two, in [1, 2)
+  int shortAxis = 1;     // the tree axis (0 = x, 1 = y) that `stretch` applies to
+
+  Vec2 yAxis() const { return {-xAxis.y, xAxis.x}; }
+  Vec2 toTree(Vec2 plane) const;
+  Vec2 toPlane(Vec2 tree) const;
+  // Length in plane units of one tree unit along each tree axis.
+  Vec2 planePerTree() const;
+};
+
+// Turns the polygon so that its longest outer edge runs along +x (exactly, when that edge is
+// axis-aligned), then scales it per axis (5.1): the longer extent onto 2^maxDepth, the shorter
+// one by the same factor and then up to the next power of two. The polygon must have area.
+TreeFrame setupTreeFrame(const PolygonWithHoles& polygon, int maxDepth);
+
+// Tree depth lambda = min(beta, ceil(log2(longerExtent / patchSize))) (equation 5.2), at least 0.
+int initialDepth(double longerExtent, double patchSize, int maxDepth);
+
+}  // namespace mesher
