@@ -15,137 +15,6 @@ bool inClosedSquare(Vec2 p, double x0, double y0, double x1, double y1) {
   return x0 <= p.x && p.x <= x1 && y0 <= p.y && p.y <= y1;
 }
 
-class TreeBuilder {
- public:
-  TreeBuilder(Quadtree& tree) : tree_(tree) {}
-
-  // False when a leaf at the deepest level would still break a rule.
-  bool subdivideUniformly(int32_t q, int depth) {
-    if (tree_.quadrants[static_cast<size_t>(q)].level >= depth) return true;
-    split(q);
-    const int32_t first = tree_.quadrants[static_cast<size_t>(q)].firstChild;
-    for (int32_t c = 0; c < 4; ++c)
-      if (!subdivideUniformly(first + c, depth)) return false;
-    return true;
-  }
-
-  bool insertVertex(uint32_t v) {
-    std::vector<int32_t> stack{0};
-    while (!stack.empty()) {
-      const int32_t q = stack.back();
-      stack.pop_back();
-      if (!touches(q, tree_.input.vertices[v])) continue;
-      Quadrant& quad = tree_.quadrants[static_cast<size_t>(q)];
-      if (!quad.isLeaf()) {
-        for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
-        continue;
-      }
-      if (quad.vertex < 0) {
-        quad.vertex = static_cast<int32_t>(v);
-        continue;
-      }
-      if (tree_.input.vertices[static_cast<size_t>(quad.vertex)] == tree_.input.vertices[v]) return false;
-      if (!splitLeaf(q)) return false;  // the children take the old vertex; retry the new one
-      stack.push_back(q);
-    }
-    return true;
-  }
-
-  bool insertEdge(uint32_t e) { return insertEdgeBelow(0, e); }
-
- private:
-  Vec2 lower(const Quadrant& q) const { return {static_cast<double>(q.x), static_cast<double>(q.y)}; }
-
-  bool touches(int32_t q, Vec2 p) const {
-    const Quadrant& quad = tree_.quadrants[static_cast<size_t>(q)];
-    const double s = static_cast<double>(tree_.edgeLength(quad));
-    return inClosedSquare(p, static_cast<double>(quad.x), static_cast<double>(quad.y), quad.x + s, quad.y + s);
-  }
-
-  bool crosses(int32_t q, uint32_t e) const {
-    const Quadrant& quad = tree_.quadrants[static_cast<size_t>(q)];
-    const double s = static_cast<double>(tree_.edgeLength(quad));
-    const auto& [a, b] = tree_.input.edges[e];
-    return segmentCrossesOpenSquare(tree_.input.vertices[a], tree_.input.vertices[b], static_cast<double>(quad.x),
-                                    static_cast<double>(quad.y), quad.x + s, quad.y + s);
-  }
-
-  // The rules of 5.2 for adding edge e to a leaf.
-  bool accepts(const Quadrant& quad, uint32_t e) const {
-    const auto& ends = tree_.input.edges[e];
-    if (quad.vertex >= 0) {
-      // Only edges ending at the leaf's vertex, and by position: another vertex at the same
-      // point would be a duplicate, which insertVertex refuses.
-      const Vec2 v = tree_.input.vertices[static_cast<size_t>(quad.vertex)];
-      return (tree_.input.vertices[ends[0]] == v || tree_.input.vertices[ends[1]] == v) && quad.edgeCount < 2;
-    }
-    // Without a vertex: one edge; and an edge must not end inside the square without the
-    // square holding that end (insertVertex put every end in place first).
-    return quad.edgeCount == 0;
-  }
-
-  void split(int32_t q) {
-    const auto first = static_cast<int32_t>(tree_.quadrants.size());
-    const Quadrant parent = tree_.quadrants[static_cast<size_t>(q)];
-    const int64_t half = tree_.edgeLength(parent) / 2;
-    for (int c = 0; c < 4; ++c) {
-      Quadrant child;
-      child.x = parent.x + (c & 1 ? half : 0);
-      child.y = parent.y + (c & 2 ? half : 0);
-      child.level = parent.level + 1;
-      child.parent = q;
-      tree_.quadrants.push_back(child);
-    }
-    Quadrant& node = tree_.quadrants[static_cast<size_t>(q)];
-    node.firstChild = first;
-    node.status = QuadStatus::Node;
-  }
-
-  // Splits a leaf and hands its vertex and edges to the children, splitting further wherever a
-  // child breaks a rule. False at the deepest level.
-  bool splitLeaf(int32_t q) {
-    if (tree_.quadrants[static_cast<size_t>(q)].level >= tree_.maxDepth) return false;
-    const Quadrant old = tree_.quadrants[static_cast<size_t>(q)];
-    split(q);
-    Quadrant& node = tree_.quadrants[static_cast<size_t>(q)];
-    node.vertex = -1;
-    node.edgeCount = 0;
-    const int32_t first = node.firstChild;
-    for (int32_t c = first; c < first + 4; ++c) {
-      if (old.vertex >= 0 && touches(c, tree_.input.vertices[static_cast<size_t>(old.vertex)]))
-        tree_.quadrants[static_cast<size_t>(c)].vertex = old.vertex;
-      for (uint8_t i = 0; i < old.edgeCount; ++i)
-        if (!insertEdgeBelow(c, old.edges[i])) return false;
-    }
-    return true;
-  }
-
-  // Stores edge e in the leaves below quadrant q that it passes through, splitting leaves whose
-  // rules it would break.
-  bool insertEdgeBelow(int32_t q, uint32_t e) {
-    std::vector<int32_t> stack{q};
-    while (!stack.empty()) {
-      const int32_t r = stack.back();
-      stack.pop_back();
-      if (!crosses(r, e)) continue;
-      Quadrant& quad = tree_.quadrants[static_cast<size_t>(r)];
-      if (!quad.isLeaf()) {
-        for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
-        continue;
-      }
-      if (accepts(quad, e)) {
-        quad.edges[quad.edgeCount++] = e;
-        continue;
-      }
-      if (!splitLeaf(r)) return false;
-      stack.push_back(r);
-    }
-    return true;
-  }
-
-  Quadtree& tree_;
-};
-
 // Even-odd test against every input edge: only for leaves no edge passes through, so the
 // centre never lies on an edge.
 bool insidePolygon(const QuadtreeInput& input, Vec2 p) {
@@ -158,6 +27,147 @@ bool insidePolygon(const QuadtreeInput& input, Vec2 p) {
 }
 
 }  // namespace
+
+void Quadtree::addChildren(int32_t q) {
+  const auto first = static_cast<int32_t>(quadrants.size());
+  const Quadrant parent = quadrants[static_cast<size_t>(q)];
+  const int64_t half = edgeLength(parent) / 2;
+  for (int c = 0; c < 4; ++c) {
+    Quadrant child;
+    child.x = parent.x + (c & 1 ? half : 0);
+    child.y = parent.y + (c & 2 ? half : 0);
+    child.level = parent.level + 1;
+    child.parent = q;
+    quadrants.push_back(child);
+  }
+  Quadrant& node = quadrants[static_cast<size_t>(q)];
+  node.firstChild = first;
+  node.status = QuadStatus::Node;
+  node.vertex = -1;
+  node.edgeCount = 0;
+}
+
+bool Quadtree::holdsPoint(int32_t q, Vec2 p) const {
+  const Quadrant& quad = (*this)[q];
+  const double s = static_cast<double>(edgeLength(quad));
+  return inClosedSquare(p, static_cast<double>(quad.x), static_cast<double>(quad.y), quad.x + s, quad.y + s);
+}
+
+bool Quadtree::crossedBy(int32_t q, uint32_t e) const {
+  const Quadrant& quad = (*this)[q];
+  const double s = static_cast<double>(edgeLength(quad));
+  const auto& [a, b] = input.edges[e];
+  return segmentCrossesOpenSquare(input.vertices[a], input.vertices[b], static_cast<double>(quad.x),
+                                  static_cast<double>(quad.y), quad.x + s, quad.y + s);
+}
+
+// The rules of 5.2 for adding edge e to a leaf: with a vertex, only (at most two) edges ending
+// at it; without one, a single edge. (Every end of an edge that lies in the closed square is
+// the leaf's vertex: vertices go in first.)
+bool Quadtree::accepts(const Quadrant& leaf, uint32_t e) const {
+  if (leaf.vertex < 0) return leaf.edgeCount == 0;
+  const auto v = static_cast<uint32_t>(leaf.vertex);
+  return (input.edgeInto[v] == e || input.edgeOutOf[v] == e) && leaf.edgeCount < 2;
+}
+
+bool Quadtree::insertVertex(uint32_t v) {
+  std::vector<int32_t> stack{0};
+  while (!stack.empty()) {
+    const int32_t q = stack.back();
+    stack.pop_back();
+    if (!holdsPoint(q, input.vertices[v])) continue;
+    Quadrant& quad = quadrants[static_cast<size_t>(q)];
+    if (!quad.isLeaf()) {
+      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
+      continue;
+    }
+    if (quad.vertex < 0) {
+      quad.vertex = static_cast<int32_t>(v);
+      continue;
+    }
+    if (input.vertices[static_cast<size_t>(quad.vertex)] == input.vertices[v]) return false;  // repeated
+    if (!splitLeaf(q)) return false;  // the children take the old vertex; try the new one again
+    stack.push_back(q);
+  }
+  return true;
+}
+
+bool Quadtree::insertEdge(int32_t below, uint32_t e) {
+  std::vector<int32_t> stack{below};
+  while (!stack.empty()) {
+    const int32_t q = stack.back();
+    stack.pop_back();
+    if (!crossedBy(q, e)) continue;
+    Quadrant& quad = quadrants[static_cast<size_t>(q)];
+    if (!quad.isLeaf()) {
+      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
+      continue;
+    }
+    if (accepts(quad, e)) {
+      quad.edges[quad.edgeCount++] = e;
+      quad.status = QuadStatus::Boundary;
+      continue;
+    }
+    if (!splitLeaf(q)) return false;
+    stack.push_back(q);
+  }
+  return true;
+}
+
+bool Quadtree::splitLeaf(int32_t q) {
+  if ((*this)[q].level >= maxDepth) return false;
+  const Quadrant old = (*this)[q];
+  addChildren(q);
+  const int32_t first = (*this)[q].firstChild;
+  for (int32_t c = first; c < first + 4; ++c) {
+    if (old.vertex >= 0 && holdsPoint(c, input.vertices[static_cast<size_t>(old.vertex)]))
+      quadrants[static_cast<size_t>(c)].vertex = old.vertex;
+    for (uint8_t i = 0; i < old.edgeCount; ++i)
+      if (!insertEdge(c, old.edges[i])) return false;
+  }
+  // New leaves without edges take their side from the old leaf's vertex and edges, or its status;
+  // while the tree is being built, more edges may still arrive, so they wait for the end.
+  if (!complete) return true;
+  std::vector<int32_t> stack{first, first + 1, first + 2, first + 3};
+  while (!stack.empty()) {
+    const int32_t c = stack.back();
+    stack.pop_back();
+    const Quadrant& child = (*this)[c];
+    if (!child.isLeaf()) {
+      for (int32_t k = 0; k < 4; ++k) stack.push_back(child.firstChild + k);
+    } else if (child.edgeCount == 0) {
+      const double half = static_cast<double>(edgeLength(child)) / 2;
+      const bool inside = old.edgeCount == 0 ? old.status == QuadStatus::Inside
+                                             : insideOf(old, {child.x + half, child.y + half});
+      quadrants[static_cast<size_t>(c)].status = inside ? QuadStatus::Inside : QuadStatus::Outside;
+    }
+  }
+  return true;
+}
+
+bool Quadtree::insideOf(const Quadrant& leaf, Vec2 p) const {
+  if (leaf.vertex >= 0) {
+    // The wedge left of the vertex's two edges: both sides for a convex corner, either for a
+    // reflex one. They are the only edges near p.
+    const auto v = static_cast<uint32_t>(leaf.vertex);
+    const Vec2 a = input.vertices[input.edges[input.edgeInto[v]][0]];
+    const Vec2 corner = input.vertices[v];
+    const Vec2 b = input.vertices[input.edges[input.edgeOutOf[v]][1]];
+    const bool leftOfIn = orient2(a, corner, p) > 0, leftOfOut = orient2(corner, b, p) > 0;
+    return orient2(a, corner, b) > 0 ? leftOfIn && leftOfOut : leftOfIn || leftOfOut;
+  }
+  if (leaf.edgeCount > 0) {
+    const auto& [i, j] = input.edges[leaf.edges[0]];
+    return orient2(input.vertices[i], input.vertices[j], p) > 0;
+  }
+  return leaf.status == QuadStatus::Inside;
+}
+
+bool Quadtree::insideAt(int32_t q, Vec2 p) const {
+  const Quadrant& leaf = (*this)[q];
+  if (leaf.edgeCount == 0 && leaf.vertex < 0) return leaf.status == QuadStatus::Inside;
+  return insideOf(leaf, p);
+}
 
 bool segmentCrossesOpenSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {
   // Liang-Barsky: the part of the segment within the closed square is [t0, t1].
@@ -210,6 +220,42 @@ int32_t Quadtree::leafAt(Vec2 p) const {
   return q;
 }
 
+void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const {
+  const Quadrant& leaf = (*this)[q];
+  const int64_t s = edgeLength(leaf);
+  const int64_t root = int64_t{1} << maxDepth;
+  // A point just across the side, at the side's lower or left end.
+  int64_t x = leaf.x, y = leaf.y;
+  switch (side) {
+    case Side::West: x -= 1; break;
+    case Side::East: x += s; break;
+    case Side::South: y -= 1; break;
+    case Side::North: y += s; break;
+  }
+  if (x < 0 || y < 0 || x >= root || y >= root) return;
+  // Descend to the quadrant across of at most the leaf's size.
+  int32_t r = 0;
+  while (!(*this)[r].isLeaf() && (*this)[r].level < leaf.level) {
+    const Quadrant& node = (*this)[r];
+    const int64_t half = edgeLength(node) / 2;
+    r = node.firstChild + (x >= node.x + half ? 1 : 0) + (y >= node.y + half ? 2 : 0);
+  }
+  // A leaf there is the one neighbour; otherwise its leaves along the facing side.
+  std::vector<int32_t> stack{r};
+  while (!stack.empty()) {
+    const int32_t n = stack.back();
+    stack.pop_back();
+    const Quadrant& node = (*this)[n];
+    if (node.isLeaf()) {
+      out.push_back(n);
+      continue;
+    }
+    // Children facing back toward the leaf: SW 0, SE 1, NW 2, NE 3.
+    static constexpr int32_t facing[4][2] = {{1, 3}, {0, 2}, {2, 3}, {0, 1}};
+    for (int32_t c : facing[static_cast<int>(side)]) stack.push_back(node.firstChild + c);
+  }
+}
+
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame) {
   QuadtreeInput input;
   auto addRing = [&](const Ring2& ring, bool counterClockwise) {
@@ -225,8 +271,17 @@ QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& fr
       input.edges.push_back(reverse ? std::array{b, a} : std::array{a, b});
     }
   };
+  auto linkEdges = [&] {
+    input.edgeInto.assign(input.vertices.size(), 0);
+    input.edgeOutOf.assign(input.vertices.size(), 0);
+    for (uint32_t e = 0; e < input.edges.size(); ++e) {
+      input.edgeOutOf[input.edges[e][0]] = e;
+      input.edgeInto[input.edges[e][1]] = e;
+    }
+  };
   addRing(polygon.outer, true);
   for (const Ring2& hole : polygon.holes) addRing(hole, false);
+  linkEdges();
   return input;
 }
 
@@ -238,23 +293,21 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
   tree.quadrants.push_back(Quadrant{});
 
   // Phases: the uniform tree of the patch size, then vertices, then edges (5.2).
-  TreeBuilder builder(tree);
-  if (!builder.subdivideUniformly(0, depth)) return std::nullopt;
+  for (size_t q = 0; q < tree.quadrants.size(); ++q)
+    if (tree.quadrants[q].level < depth) tree.splitLeaf(static_cast<int32_t>(q));
   for (uint32_t v = 0; v < tree.input.vertices.size(); ++v)
-    if (!builder.insertVertex(v)) return std::nullopt;
+    if (!tree.insertVertex(v)) return std::nullopt;
   for (uint32_t e = 0; e < tree.input.edges.size(); ++e)
-    if (!builder.insertEdge(e)) return std::nullopt;
+    if (!tree.insertEdge(0, e)) return std::nullopt;
 
-  // Classification: leaves holding edges are boundary, the others lie wholly on one side.
+  // Classification: leaves holding edges are boundary (set as they were stored), the others
+  // lie wholly on one side.
   for (Quadrant& q : tree.quadrants) {
-    if (!q.isLeaf()) continue;
-    if (q.edgeCount > 0) {
-      q.status = QuadStatus::Boundary;
-      continue;
-    }
+    if (!q.isLeaf() || q.status != QuadStatus::Undefined) continue;
     const double half = static_cast<double>(tree.edgeLength(q)) / 2;
     q.status = insidePolygon(tree.input, {q.x + half, q.y + half}) ? QuadStatus::Inside : QuadStatus::Outside;
   }
+  tree.complete = true;
   return tree;
 }
 

@@ -29,22 +29,49 @@ struct Quadrant {
 };
 
 // Edge e runs from vertex edges[e][0] to edges[e][1] with the polygon's inside on its left
-// (outer ring counter-clockwise, holes clockwise).
+// (outer ring counter-clockwise, holes clockwise). Every vertex has one edge in and one out.
 struct QuadtreeInput {
-  std::vector<Vec2> vertices;                      // tree coordinates, outer ring first, then holes
+  std::vector<Vec2> vertices;                   // tree coordinates, outer ring first, then holes
   std::vector<std::array<uint32_t, 2>> edges;
+  std::vector<uint32_t> edgeInto, edgeOutOf;    // per vertex
 };
 
-struct Quadtree {
+enum class Side : uint8_t { West, East, South, North };
+
+class Quadtree {
+ public:
   int maxDepth = 0;
   std::vector<Quadrant> quadrants;  // [0] is the root
   QuadtreeInput input;
+  bool complete = false;  // every vertex and edge stored and every leaf classified
 
   int64_t edgeLength(const Quadrant& q) const { return int64_t{1} << (maxDepth - q.level); }
+  const Quadrant& operator[](int32_t q) const { return quadrants[static_cast<size_t>(q)]; }
+
   // Leaves only, in tree order.
   std::vector<int32_t> leaves() const;
   // The leaf whose half-open square [x, x + s) x [y, y + s) holds p; -1 outside the root.
   int32_t leafAt(Vec2 p) const;
+  // The leaves sharing part of `side` of leaf q (one coarser or equal leaf, or several finer).
+  void neighbors(int32_t q, Side side, std::vector<int32_t>& out) const;
+  // Whether point p of leaf q's closed square lies inside the polygon, from the leaf's own
+  // vertex and edges (its status when it holds none). p must not lie on a stored edge.
+  bool insideAt(int32_t q, Vec2 p) const;
+
+  // Splits leaf q into four, handing its vertex and edges down under the rules of 5.2 (splitting
+  // deeper where a child breaks one) and classifying the new leaves. False at the deepest level.
+  bool splitLeaf(int32_t q);
+  // Stores vertex v / edge e in the leaves below quadrant q that hold it, splitting leaves whose
+  // rules it would break. False when that needs a level deeper than maxDepth.
+  bool insertVertex(uint32_t v);
+  bool insertEdge(int32_t q, uint32_t e);
+
+ private:
+  void addChildren(int32_t q);
+  bool holdsPoint(int32_t q, Vec2 p) const;
+  bool crossedBy(int32_t q, uint32_t e) const;
+  bool accepts(const Quadrant& leaf, uint32_t e) const;
+  bool insideOf(const Quadrant& leaf, Vec2 p) const;
 };
 
 // Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`).

@@ -1,0 +1,44 @@
+#include "mesher/balance.h"
+
+namespace mesher {
+
+namespace {
+
+// A split may go deeper than one level where a child breaks a storage rule.
+void pushLeavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out) {
+  if (tree[q].isLeaf()) {
+    out.push_back(q);
+    return;
+  }
+  for (int32_t c = 0; c < 4; ++c) pushLeavesBelow(tree, tree[q].firstChild + c, out);
+}
+
+}  // namespace
+
+size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
+  size_t splits = 0;
+  std::vector<int32_t> across;
+  while (!seeds.empty()) {
+    const int32_t q = seeds.back();
+    seeds.pop_back();
+    const Quadrant& leaf = tree[q];
+    if (!leaf.isLeaf() || leaf.status == QuadStatus::Outside) continue;
+    for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
+      across.clear();
+      tree.neighbors(q, side, across);
+      for (int32_t n : across) {
+        const Quadrant& neighbor = tree[n];
+        if (neighbor.status == QuadStatus::Outside || neighbor.level >= tree[q].level - 1) continue;
+        tree.splitLeaf(n);  // coarser than q, so never at the deepest level
+        pushLeavesBelow(tree, n, seeds);
+        seeds.push_back(q);  // its neighbour there may still be too coarse
+        ++splits;
+      }
+    }
+  }
+  return splits;
+}
+
+size_t balance(Quadtree& tree) { return balanceAround(tree, tree.leaves()); }
+
+}  // namespace mesher
