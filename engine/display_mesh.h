@@ -17,13 +17,18 @@ struct DisplayMesh {
   std::vector<glm::vec3> radiance;   // per vertex, linear RGB
   std::vector<float> area;           // per vertex: a third of the area of its triangles
   std::vector<uint32_t> triangles;   // 3 indices per triangle, counter-clockwise from the front
-  std::vector<uint32_t> edges;       // 2 indices per element edge, each edge once
+  std::vector<uint32_t> edges;       // 2 indices per element edge
+  size_t elements = 0, quads = 0;    // mesh elements (quads are drawn as two triangles)
+  // Surface i owns vertices [surfaceVertexStart[i], surfaceVertexStart[i + 1]); each block starts
+  // with the surface's own points (outer ring, then holes) at their exact coordinates.
+  std::vector<uint32_t> surfaceVertexStart;
 
   size_t triangleCount() const { return triangles.size() / 3; }
 };
 
-// Meshes every surface (ear clipping, no Steiner points) and shades it with its emission plus
-// its reflectance times the scene's ambient radiance, returned in `ambient` when not null.
+// Meshes every surface with the modified quadtree at its patch size and shades it with its
+// emission plus its reflectance times the scene's ambient radiance, returned in `ambient` when
+// not null.
 DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambient = nullptr);
 
 // An exposure that maps the area-weighted log-average luminance of the mesh to `key` (Reinhard

@@ -260,10 +260,16 @@ QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& fr
   QuadtreeInput input;
   auto addRing = [&](const Ring2& ring, bool counterClockwise) {
     const auto first = static_cast<uint32_t>(input.vertices.size());
-    // Rounding in the turn and scale can put an extreme point a hair outside the root square,
-    // where no leaf could hold it: clamp onto the border.
+    // Rounding in the turn and scale leaves points a hair off the grid lines they belong on (the
+    // far side of a rectangle, an extreme point just outside the root square): snap them onto the
+    // grid and into the root. Only the tree sees this; output keeps the input coordinates.
     const double root = std::exp2(frame.maxDepth);
-    for (const Vec2& p : ring) input.vertices.push_back(glm::clamp(frame.toTree(p), Vec2{0}, Vec2{root}));
+    for (const Vec2& p : ring) {
+      Vec2 t = glm::clamp(frame.toTree(p), Vec2{0}, Vec2{root});
+      for (int k = 0; k < 2; ++k)
+        if (std::abs(t[k] - std::round(t[k])) <= kGridSnap) t[k] = std::round(t[k]);
+      input.vertices.push_back(t);
+    }
     const bool reverse = (signedArea(ring) > 0) != counterClockwise;
     const auto n = static_cast<uint32_t>(ring.size());
     for (uint32_t i = 0; i < n; ++i) {

@@ -13,6 +13,10 @@
 
 namespace mesher {
 
+// Tree coordinates this close to an integer are taken to lie on that grid line (tree units; the
+// smallest quadrant is 1).
+constexpr double kGridSnap = 1e-6;
+
 enum class QuadStatus : uint8_t { Node, Undefined, Outside, Boundary, Inside };
 
 struct Quadrant {

@@ -1,0 +1,173 @@
+#include "mesher/leaf_region.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mesher {
+
+namespace {
+
+double snapToGrid(double v) {
+  const double r = std::round(v);
+  return std::abs(v - r) <= kGridSnap ? r : v;
+}
+
+// The square's border as a line parameter running counter-clockwise from the lower-left corner.
+struct Border {
+  double x0, y0, s;
+  double param(Vec2 p) const {
+    if (p.y == y0 && p.x < x0 + s) return p.x - x0;
+    if (p.x == x0 + s && p.y < y0 + s) return s + (p.y - y0);
+    if (p.y == y0 + s && p.x > x0) return 2 * s + (x0 + s - p.x);
+    return 3 * s + (y0 + s - p.y);  // the left side, lower-left corner excluded above
+  }
+};
+
+// Where edge a->b meets the side line the Liang-Barsky clip stopped at, with the line's
+// coordinate exact and the other one computed from the line alone.
+struct Clip {
+  double t0 = 0, t1 = 1;
+  int entrySide = -1, exitSide = -1;  // 0 west (x = x0), 1 east, 2 south (y = y0), 3 north
+};
+
+Clip clipToSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {
+  Clip c;
+  const Vec2 d = b - a;
+  const double p[4] = {-d.x, d.x, -d.y, d.y};
+  const double q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+  for (int k = 0; k < 4; ++k) {
+    if (p[k] == 0) continue;
+    const double r = q[k] / p[k];
+    if (p[k] < 0 && r > c.t0) c.t0 = r, c.entrySide = k;
+    if (p[k] > 0 && r < c.t1) c.t1 = r, c.exitSide = k;
+  }
+  return c;
+}
+
+Vec2 onSideLine(Vec2 a, Vec2 b, int side, double x0, double y0, double x1, double y1) {
+  const double line = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
+  if (side < 2) {
+    // Always interpolate from the edge's own start so both leaves of the line agree.
+    const double y = a.y + (line - a.x) * (b.y - a.y) / (b.x - a.x);
+    return {line, snapToGrid(std::clamp(y, y0, y1))};
+  }
+  const double x = a.x + (line - a.y) * (b.x - a.x) / (b.y - a.y);
+  return {snapToGrid(std::clamp(x, x0, x1)), line};
+}
+
+}  // namespace
+
+LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
+  LeafRegion region;
+  const Quadrant& leaf = tree[q];
+  if (leaf.status == QuadStatus::Outside) return region;
+  const double s = static_cast<double>(tree.edgeLength(leaf));
+  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y);
+  const double x1 = x0 + s, y1 = y0 + s;
+  const Border border{x0, y0, s};
+  const QuadtreeInput& in = tree.input;
+
+  // Every point of the border that is a mesh vertex: corners, finer neighbours' corners, the
+  // leaf's vertex when it lies on the border.
+  std::vector<RegionPoint> onBorder{{{x0, y0}}, {{x1, y0}}, {{x1, y1}}, {{x0, y1}}};
+  std::vector<int32_t> across;
+  for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
+    across.clear();
+    tree.neighbors(q, side, across);
+    for (int32_t n : across) {
+      const Quadrant& other = tree[n];
+      if (other.level <= leaf.level || other.status == QuadStatus::Outside) continue;
+      const double ns = static_cast<double>(tree.edgeLength(other));
+      const bool vertical = side == Side::West || side == Side::East;
+      const Vec2 a = vertical ? Vec2{side == Side::West ? x0 : x1, static_cast<double>(other.y)}
+                              : Vec2{static_cast<double>(other.x), side == Side::South ? y0 : y1};
+      const Vec2 b = vertical ? Vec2{a.x, a.y + ns} : Vec2{a.x + ns, a.y};
+      for (const Vec2& p : {a, b}) {
+        if (vertical ? (p.y > y0 && p.y < y1) : (p.x > x0 && p.x < x1)) onBorder.push_back({p});
+      }
+    }
+  }
+  const bool vertexOnBorder = leaf.vertex >= 0 && [&] {
+    const Vec2 v = in.vertices[static_cast<size_t>(leaf.vertex)];
+    return v.x == x0 || v.x == x1 || v.y == y0 || v.y == y1;
+  }();
+  if (vertexOnBorder) onBorder.push_back({in.vertices[static_cast<size_t>(leaf.vertex)], leaf.vertex});
+
+  // The polygon's boundary through the leaf, from where it enters to where it leaves.
+  std::vector<RegionPoint> path;
+  Vec2 hinge{0};
+  if (leaf.edgeCount > 0) {
+    auto crossing = [&](uint32_t e, bool entry) {
+      const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
+      const Clip c = clipToSquare(a, b, x0, y0, x1, y1);
+      const int side = entry ? c.entrySide : c.exitSide;
+      return RegionPoint{onSideLine(a, b, side, x0, y0, x1, y1)};
+    };
+    if (leaf.vertex >= 0) {
+      const auto v = static_cast<uint32_t>(leaf.vertex);
+      const uint32_t into = in.edgeInto[v], outOf = in.edgeOutOf[v];
+      const bool storedInto = std::find(leaf.edges.begin(), leaf.edges.begin() + leaf.edgeCount, into) != leaf.edges.begin() + leaf.edgeCount;
+      const bool storedOutOf = std::find(leaf.edges.begin(), leaf.edges.begin() + leaf.edgeCount, outOf) != leaf.edges.begin() + leaf.edgeCount;
+      if (storedInto) path.push_back(crossing(into, true));
+      path.push_back({in.vertices[v], leaf.vertex});
+      if (storedOutOf) path.push_back(crossing(outOf, false));
+      hinge = in.vertices[v];
+    } else {
+      path.push_back(crossing(leaf.edges[0], true));
+      path.push_back(crossing(leaf.edges[0], false));
+      hinge = path.back().at;  // the end of the line (5.4)
+    }
+  }
+
+  // Order the border points counter-clockwise, one per position.
+  std::sort(onBorder.begin(), onBorder.end(), [&](const RegionPoint& a, const RegionPoint& b) {
+    const double pa = border.param(a.at), pb = border.param(b.at);
+    return pa < pb || (pa == pb && a.inputVertex > b.inputVertex);
+  });
+  onBorder.erase(std::unique(onBorder.begin(), onBorder.end(),
+                             [](const RegionPoint& a, const RegionPoint& b) { return a.at == b.at; }),
+                 onBorder.end());
+
+  if (path.empty()) {
+    if (leaf.status != QuadStatus::Inside) return region;
+    region.ring = onBorder;
+    return region;
+  }
+
+  // The inside runs along the border counter-clockwise from where the boundary leaves the
+  // square to where it enters.
+  const double from = border.param(path.back().at), to = border.param(path.front().at);
+  const double span = to > from ? to - from : to + 4 * s - from;
+  region.ring = path;
+  std::vector<std::pair<double, RegionPoint>> walk;
+  for (const RegionPoint& p : onBorder) {
+    double offset = border.param(p.at) - from;
+    if (offset < 0) offset += 4 * s;
+    if (offset > 0 && offset < span) walk.push_back({offset, p});
+  }
+  std::sort(walk.begin(), walk.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [offset, p] : walk) region.ring.push_back(p);
+  // Drop points repeated next to each other (a crossing on a corner, the vertex on the border).
+  std::vector<RegionPoint> ring;
+  for (const RegionPoint& p : region.ring) {
+    if (!ring.empty() && ring.back().at == p.at) {
+      if (p.inputVertex >= 0) ring.back() = p;
+      continue;
+    }
+    ring.push_back(p);
+  }
+  while (ring.size() > 1 && ring.front().at == ring.back().at) {
+    if (ring.back().inputVertex >= 0) ring.front() = ring.back();
+    ring.pop_back();
+  }
+  region.ring = std::move(ring);
+  if (region.ring.size() < 3) {
+    region.ring.clear();
+    return region;
+  }
+  for (size_t i = 0; i < region.ring.size(); ++i)
+    if (region.ring[i].at == hinge) region.hinge = static_cast<int>(i);
+  return region;
+}
+
+}  // namespace mesher

@@ -1,0 +1,39 @@
+// walkrad's mesher: the modified quadtree of Nimscheck's thesis, chapter 5. Plain data in, plain
+// data out; GLM only.
+//
+// A polygon with holes (2-D, in its plane) is turned and scaled into a quadtree (5.1), its
+// vertices and edges are stored under the PM-quadtree rules (5.2), the leaves are classified and
+// 2:1 balanced, and each leaf inside or on the boundary becomes convex quadrilaterals and
+// triangles: interior squares by templates that anchor T-vertices (5.3), boundary leaves by
+// subdomain removal around a hinge vertex (5.4). No input vertex or edge moves.
+#pragma once
+
+#include "mesher/triangulate.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace mesher {
+
+struct MeshSettings {
+  double patchSize = 1;  // largest element edge along either axis of the tree, in plane units (> 0)
+};
+
+struct Mesh {
+  static constexpr uint32_t kNone = 0xffffffffu;
+  // Plane coordinates. The polygon's points come first, numbered as triangulate() numbers them
+  // (outer ring, then each hole), with their exact input coordinates.
+  std::vector<Vec2> vertices;
+  // Counter-clockwise; triangles have [3] == kNone.
+  std::vector<std::array<uint32_t, 4>> elements;
+
+  size_t quadCount() const;
+  size_t triangleCount() const { return elements.size() - quadCount(); }
+};
+
+// Meshes a valid polygon (simple rings, holes strictly inside and disjoint; either winding).
+// Throws std::invalid_argument for a polygon whose vertices no tree depth can separate.
+Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings);
+
+}  // namespace mesher
