@@ -15,7 +15,7 @@ void pushLeavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out)
 
 }  // namespace
 
-size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
+std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
   size_t splits = 0;
   std::vector<int32_t> across;
   while (!seeds.empty()) {
@@ -29,7 +29,7 @@ size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
       for (int32_t n : across) {
         const Quadrant& neighbor = tree[n];
         if (neighbor.status == QuadStatus::Outside || neighbor.level >= tree[q].level - 1) continue;
-        tree.splitLeaf(n);  // coarser than q, so never at the deepest level
+        if (!tree.splitLeaf(n)) return std::nullopt;
         pushLeavesBelow(tree, n, seeds);
         seeds.push_back(q);  // its neighbour there may still be too coarse
         ++splits;
@@ -39,6 +39,6 @@ size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
   return splits;
 }
 
-size_t balance(Quadtree& tree) { return balanceAround(tree, tree.leaves()); }
+std::optional<size_t> balance(Quadtree& tree) { return balanceAround(tree, tree.leaves()); }
 
 }  // namespace mesher

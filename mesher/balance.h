@@ -4,16 +4,19 @@
 
 #include "mesher/quadtree.h"
 
+#include <optional>
 #include <vector>
 
 namespace mesher {
 
 // Splits coarse leaves until the tree is balanced around `seeds` (their neighbourhoods ripple
-// as far as splitting forces). Work is proportional to the leaves split. Returns how many were.
+// as far as splitting forces). Work is proportional to the leaves split. Returns how many were,
+// or nothing when a split leaf's edges would need a level deeper than maxDepth (a sharp corner
+// whose leaf had held it whole): the tree is then unusable and must be rebuilt deeper.
 // The tree must be complete. Outside leaves take no part.
-size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
+std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
 
 // Balances the whole tree.
-size_t balance(Quadtree& tree);
+std::optional<size_t> balance(Quadtree& tree);
 
 }  // namespace mesher

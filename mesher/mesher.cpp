@@ -6,6 +6,7 @@
 #include "mesher/subdomain_removal.h"
 
 #include <cstring>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace mesher {
@@ -36,10 +37,15 @@ size_t Mesh::quadCount() const {
 }
 
 Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) {
-  // Phases of chapter 5: tree setup and edge storage, balancing, leaf by leaf meshing.
+  // Phases of chapter 5: tree setup and edge storage, balancing, leaf by leaf meshing. Balancing
+  // can split a leaf that held a sharp corner whole; when its edges then need more levels than
+  // the tree has, the tree is built deeper.
   PolygonTree built = buildPolygonTree(polygon, settings.patchSize);
+  for (int deeper = 8; !balance(built.tree); deeper += 8) {
+    if (built.tree.maxDepth >= kDeepestTree) throw std::invalid_argument("polygon corner too sharp to balance");
+    built = buildPolygonTree(polygon, settings.patchSize, deeper);
+  }
   Quadtree& tree = built.tree;
-  balance(tree);
 
   Mesh mesh;
   std::unordered_map<PointKey, uint32_t, PointHash> ids;

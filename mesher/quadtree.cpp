@@ -317,11 +317,11 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
   return tree;
 }
 
-PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize) {
-  constexpr int kDeepest = 50;  // quadrant corners stay exact doubles
+PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, int deeper) {
+  constexpr int kDeepest = kDeepestTree;
   const double longerExtent = 1 / setupTreeFrame(polygon, 0).scale;  // a root of edge 1
   const int depth = initialDepth(longerExtent, patchSize, kDeepest);
-  for (int maxDepth = std::min(kDeepest, depth + 16);; maxDepth = std::min(kDeepest, maxDepth + 8)) {
+  for (int maxDepth = std::min(kDeepest, depth + 16 + deeper);; maxDepth = std::min(kDeepest, maxDepth + 8)) {
     PolygonTree result{setupTreeFrame(polygon, maxDepth), depth, {}};
     if (auto tree = buildQuadtree(quadtreeInput(polygon, result.frame), maxDepth, depth)) {
       result.tree = std::move(*tree);

@@ -89,15 +89,18 @@ QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& fr
 std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth);
 
 // A polygon's tree for a patch size: the frame of 5.1, the depth of 5.2, and a maximum depth
-// that starts 16 levels below the patch size and grows by 8 (up to 50) whenever two vertices
-// cannot be separated. Throws std::invalid_argument for a polygon no depth can store (repeated
-// or crossing vertices).
+// that starts 16 + `deeper` levels below the patch size and grows by 8 (up to 50) whenever two
+// vertices cannot be separated. Throws std::invalid_argument for a polygon no depth can store
+// (repeated or crossing vertices).
 struct PolygonTree {
   TreeFrame frame;
   int depth = 0;  // lambda: the uniform depth of the patch size
   Quadtree tree;
 };
-PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize);
+PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, int deeper = 0);
+
+// The deepest tree buildPolygonTree makes: quadrant corners stay exact doubles.
+constexpr int kDeepestTree = 50;
 
 // True when segment a-b passes through the open square [x0, x1] x [y0, y1] (touching its border
 // only does not count).

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <set>
 
 namespace mesher::test {
 
@@ -30,7 +31,11 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
   double size = 0;
   for (const Vec2& p : polygon.outer) size = std::max({size, std::abs(p.x), std::abs(p.y)});
   const double extent = mesher::extent(polygon.outer);
+  // On the boundary: within 1e-9 of the polygon's size. A T-vertex: on an element edge up to the
+  // rounding of computed points (1e-12 of the coordinates), not merely close to it, as the
+  // corners of a sliver at a sharp spike are.
   const double tolerance = 1e-9 * std::max(extent, 1e-9 * size);
+  const double onEdge = 1e-12 * (size + extent);
 
   size_t index = 0;
   for (const Ring2& ring : rings)
@@ -67,12 +72,14 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
       }
     check.unmatchedInnerEdges += !onBoundary;
   }
+  std::set<std::pair<uint32_t, uint32_t>> undirected;
+  for (const auto& [edge, uses] : edgeUse) undirected.insert(std::minmax(edge.first, edge.second));
   for (size_t v = 0; v < mesh.vertices.size(); ++v)
-    for (const auto& [edge, uses] : edgeUse) {
-      if (edge.first == v || edge.second == v || edge.first > edge.second) continue;
+    for (const auto& edge : undirected) {
+      if (edge.first == v || edge.second == v) continue;
       double t;
       const double d = distanceToSegment(mesh.vertices[v], mesh.vertices[edge.first], mesh.vertices[edge.second], t);
-      if (d <= tolerance && t > 1e-12 && t < 1 - 1e-12) ++check.tVertices;
+      if (d <= onEdge && t > 1e-12 && t < 1 - 1e-12) ++check.tVertices;
     }
   return check;
 }

@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace mesher {
 namespace {
 
-void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize) {
+void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize, int line = __builtin_LINE()) {
+  SCOPED_TRACE("mesh of line " + std::to_string(line));
   const Mesh mesh = meshPolygon(polygon, {patchSize});
   const test::MeshCheck c = test::checkMesh(polygon, mesh);
   EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
@@ -47,6 +49,66 @@ TEST(Mesher, RandomPolygonsWithHoles) {
     const PolygonWithHoles polygon = test::randomPolygonWithHoles(random, trial);
     expectGoodMesh(polygon, 5 + trial % 40);
   }
+}
+
+Ring2 regularPolygon(Vec2 center, double radius, int sides, double turnDeg) {
+  Ring2 ring;
+  for (int i = 0; i < sides; ++i) {
+    const double a = (turnDeg + 360.0 * i / sides) * std::numbers::pi / 180;
+    ring.push_back(center + radius * Vec2{std::cos(a), std::sin(a)});
+  }
+  return ring;
+}
+
+// Turned inputs put vertices a rounding error off grid lines and edges a hair past corners.
+TEST(Mesher, TurnedPolygonsAtManyAngles) {
+  for (double turn = 0; turn < 90; turn += 1.7) {
+    SCOPED_TRACE(std::to_string(turn) + " degrees");
+    expectGoodMesh({regularPolygon({3.5, -2}, 3.455, 16, turn), {}}, 12);
+    expectGoodMesh({regularPolygon({0, 0}, 10, 4, turn + 45), {regularPolygon({1, 1}, 2, 4, turn + 45)}}, 1.3);
+    expectGoodMesh({regularPolygon({100, 50}, 40, 24, turn), {regularPolygon({90, 50}, 5, 6, turn), regularPolygon({115, 50}, 5, 3, turn)}}, 7);
+  }
+}
+
+// Near-degenerate input from the issue: close vertices, sharp spikes, slivers, far offsets.
+TEST(Mesher, NearDegeneratePolygons) {
+  expectGoodMesh({{{0, 0}, {1, 0}, {1, 1}, {1e-6, 1}, {0, 1 - 1e-6}}, {}}, 0.25);          // vertices 1e-6 apart
+  const double spike = std::tan(std::numbers::pi / 180);                                      // a 1-degree spike
+  expectGoodMesh({{{0, 0}, {10, 0}, {10, 1}, {20, 1 + 10 * spike / 2}, {10, 1 + 10 * spike}, {10, 2}, {0, 2}}, {}}, 1);
+  expectGoodMesh({{{0, 0}, {100, 0}, {100, 0.01}, {0, 0.01}}, {}}, 5);                        // a sliver
+  expectGoodMesh({{{0, 0}, {100, 0}, {0, 0.5}}, {}}, 5);                                      // a thin triangle
+  const Vec2 far{3e6, -7e6};
+  expectGoodMesh({{far, far + Vec2{50, 0}, far + Vec2{50, 20}, far + Vec2{0, 20}},
+                  {{far + Vec2{10, 5}, far + Vec2{10, 15}, far + Vec2{20, 15}, far + Vec2{20, 5}}}},
+                 2);
+}
+
+// The checks themselves catch broken meshes, so a passing mesh means something.
+TEST(MeshChecks, CatchBrokenMeshes) {
+  const PolygonWithHoles square{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}};
+  Mesh mesh = meshPolygon(square, {1});
+  ASSERT_EQ(mesh.elements.size(), 4u);
+  EXPECT_EQ(test::checkMesh(square, mesh).tVertices, 0u);
+
+  Mesh missing = mesh;
+  missing.elements.pop_back();
+  const test::MeshCheck holed = test::checkMesh(square, missing);
+  EXPECT_LT(holed.elementArea, holed.polygonArea);
+  EXPECT_GT(holed.unmatchedInnerEdges, 0u);
+
+  Mesh moved = mesh;
+  moved.vertices[0].x += 1e-3;
+  EXPECT_EQ(test::checkMesh(square, moved).movedInputVertices, 1u);
+
+  // Replace the two right quads by one: the centre of its left edge becomes a T-vertex.
+  Mesh coarse;
+  coarse.vertices = {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 0}, {1, 1}, {1, 2}, {0, 1}};
+  coarse.elements = {{0, 4, 5, 7}, {7, 5, 6, 3}, {4, 1, 2, 6}};
+  EXPECT_GT(test::checkMesh(square, coarse).tVertices, 0u);
+
+  Mesh flipped = mesh;
+  std::swap(flipped.elements[0][1], flipped.elements[0][3]);
+  EXPECT_GT(test::checkMesh(square, flipped).notCounterClockwiseOrConvex, 0u);
 }
 
 }  // namespace
