@@ -1,4 +1,5 @@
 // walkrad: the command line of spec/cli.md.
+#include "app/cli/mesh_command.h"
 #include "app/cli/render_command.h"
 #include "app/window/walk_window.h"
 #include "engine/diagnostics.h"
@@ -33,6 +34,14 @@ int main(int argc, char** argv) {
   viewCommand->add_option("--frames", view.frames, "close after this many frames")->check(CLI::NonNegativeNumber);
   viewCommand->add_option("--screenshot", view.screenshot, "with --frames: save the last frame as PNG");
 
+  app::MeshOptions mesh;
+  CLI::App* meshCommand = cli.add_subcommand("mesh", "mesh a scene or a polygon case and print statistics");
+  meshCommand->add_option("input", mesh.input, "scene file or polygon case (.json)")->required();
+  meshCommand->add_option("--patch-size", mesh.patchSize, "override the input's patch size")->check(CLI::PositiveNumber);
+  meshCommand->add_option("--dump", mesh.dump, "write the mesh as JSON");
+  meshCommand->add_option("--stats", mesh.stats, "write statistics as JSON");
+  meshCommand->add_option("--repeat", mesh.repeat, "mesh N times, report the best time")->check(CLI::Range(1, 100000));
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -43,6 +52,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*renderCommand) return app::runRender(render);
+    if (*meshCommand) return app::runMesh(mesh);
     return app::runView(view);
   } catch (const engine::SceneError& e) {
     std::cerr << e.what() << "\n";

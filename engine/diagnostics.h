@@ -1,6 +1,7 @@
 // Every way a scene file can be refused, in one table, so tests check ids rather than wording.
 #pragma once
 
+#include <ostream>
 #include <stdexcept>
 #include <string>
 
@@ -41,6 +42,9 @@ enum class Diag {
 
 // The user-facing text of a diagnostic.
 const char* describe(Diag diag);
+
+// Test frameworks print a diagnostic by its text.
+inline void PrintTo(Diag diag, std::ostream* out) { *out << describe(diag); }
 
 // A scene refused: where (file and JSON path, or file:line:column for syntax) and why.
 // what() is the one line to print: "FILE: PATH: problem: detail".

@@ -309,7 +309,7 @@ Scene parseScene(std::string_view text, const std::string& file) {
   return scene;
 }
 
-Scene loadScene(const std::string& path) {
+std::string readInputFile(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw SceneError(Diag::FileUnreadable, path, "", error ? error.message() : "not a regular file");
@@ -317,7 +317,11 @@ Scene loadScene(const std::string& path) {
   std::ostringstream text;
   text << file.rdbuf();
   if (!file) throw SceneError(Diag::FileUnreadable, path, "", std::strerror(errno));
-  return parseScene(text.str(), path);
+  return text.str();
+}
+
+Scene loadScene(const std::string& path) {
+  return parseScene(readInputFile(path), path);
 }
 
 const Camera* Scene::findCamera(const std::string& name) const {

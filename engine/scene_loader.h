@@ -15,6 +15,9 @@ Scene loadScene(const std::string& path);
 // The same for scene text already in memory; `file` names it in messages.
 Scene parseScene(std::string_view text, const std::string& file);
 
+// The whole text of a file; throws SceneError (FileUnreadable) naming it when it cannot be read.
+std::string readInputFile(const std::string& path);
+
 // Metres per unit for a `units` value, or 0 when unknown.
 double metersPerUnit(std::string_view units);
 

@@ -52,13 +52,14 @@ int runRender(const RenderOptions& options) {
   if (!options.linear.empty()) writePfm(options.linear, images.linear);
   if (!options.stats.empty()) {
     // Keys of spec/cli.md. There is no solver yet: every surface is one patch, nothing is shot.
+    // Elements are the quadtree's quads and triangles.
     const nlohmann::ordered_json stats = {
         {"load_ms", loadMs},
         {"mesh_ms", meshMs},
         {"solve_ms", 0.0},
         {"render_ms", renderMs},
         {"patches", scene.surfaces.size()},
-        {"elements", mesh.triangleCount()},
+        {"elements", mesh.elements},
         {"vertices", mesh.positions.size()},
         {"shots", 0},
         {"unshot_fraction", 1.0},

@@ -39,11 +39,12 @@ void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh,
   ImGui::Text("%s (%s)", std::filesystem::path(scene.file).filename().c_str(), scene.units.c_str());
   ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Shading: emission + reflectance x ambient.");
   ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "No radiosity solution yet.");
+  ImGui::TextDisabled("Mesh: modified quadtree (thesis ch. 5)");
   ImGui::Separator();
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::Text("%.1f fps (%.2f ms a frame)", io.Framerate, 1000.0f / io.Framerate);
   ImGui::Text("%zu objects, %zu surfaces", scene.objects.size(), scene.surfaces.size());
-  ImGui::Text("%zu polygons (triangles), %zu vertices", mesh.triangleCount(), mesh.positions.size());
+  ImGui::Text("%zu patches (%zu quads), %zu vertices", mesh.elements, mesh.quads, mesh.positions.size());
   ImGui::Separator();
   ImGui::SliderFloat("exposure", &state.exposure, 1e-3f, 1e3f, "%.3g", ImGuiSliderFlags_Logarithmic);
   ImGui::Checkbox("wireframe", &state.wireframe);

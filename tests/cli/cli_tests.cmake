@@ -45,3 +45,11 @@ walkrad_cli_test(render_all_outputs 0
                  ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-cornell.png
                       --linear ${out}/cli-cornell.pfm --stats ${out}/cli-cornell.json --width 200 --height 150 --wireframe
                  FILE ${out}/cli-cornell.pfm)
+
+# walkrad mesh: polygon cases and scenes.
+walkrad_cli_test(mesh_polygon_case 0 ARGS mesh ${cli_dir}/wall_with_window.json --stats ${out}/mesh-wall.json --dump ${out}/mesh-wall-dump.json
+                 STDOUT "0 T-vertices" FILE ${out}/mesh-wall-dump.json)
+walkrad_cli_test(mesh_scene 0 ARGS mesh ${PROJECT_SOURCE_DIR}/assets/cornell.json --patch-size 100 --repeat 2 STDOUT "elements .*quads")
+walkrad_cli_test(mesh_hole_outside 2 ARGS mesh ${cli_dir}/hole_outside.json STDERR "hole_outside.json: holes\\[0\\]: hole is not strictly inside")
+walkrad_cli_test(mesh_no_patch_size 2 ARGS mesh ${cli_dir}/no_patch_size.json STDERR "no_patch_size.json: patch_size: missing required field")
+walkrad_cli_test(mesh_bad_repeat 2 ARGS mesh ${cli_dir}/wall_with_window.json --repeat 0 STDERR "^walkrad: .*repeat")

@@ -1,7 +1,8 @@
 // The whole of chapter 5: meshes tile their polygon exactly, conform, keep every input vertex.
 #include "mesher/mesher.h"
 
-#include "tests/mesher/mesh_checks.h"
+#include "mesher/mesh_check.h"
+
 #include "tests/mesher/random_polygons.h"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace {
 void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize, int line = __builtin_LINE()) {
   SCOPED_TRACE("mesh of line " + std::to_string(line));
   const Mesh mesh = meshPolygon(polygon, {patchSize});
-  const test::MeshCheck c = test::checkMesh(polygon, mesh);
+  const MeshCheck c = checkMesh(polygon, mesh);
   EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
   EXPECT_EQ(c.notCounterClockwiseOrConvex, 0u);
   EXPECT_EQ(c.movedInputVertices, 0u);
@@ -88,27 +89,27 @@ TEST(MeshChecks, CatchBrokenMeshes) {
   const PolygonWithHoles square{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}};
   Mesh mesh = meshPolygon(square, {1});
   ASSERT_EQ(mesh.elements.size(), 4u);
-  EXPECT_EQ(test::checkMesh(square, mesh).tVertices, 0u);
+  EXPECT_EQ(checkMesh(square, mesh).tVertices, 0u);
 
   Mesh missing = mesh;
   missing.elements.pop_back();
-  const test::MeshCheck holed = test::checkMesh(square, missing);
+  const MeshCheck holed = checkMesh(square, missing);
   EXPECT_LT(holed.elementArea, holed.polygonArea);
   EXPECT_GT(holed.unmatchedInnerEdges, 0u);
 
   Mesh moved = mesh;
   moved.vertices[0].x += 1e-3;
-  EXPECT_EQ(test::checkMesh(square, moved).movedInputVertices, 1u);
+  EXPECT_EQ(checkMesh(square, moved).movedInputVertices, 1u);
 
   // Replace the two right quads by one: the centre of its left edge becomes a T-vertex.
   Mesh coarse;
   coarse.vertices = {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 0}, {1, 1}, {1, 2}, {0, 1}};
   coarse.elements = {{0, 4, 5, 7}, {7, 5, 6, 3}, {4, 1, 2, 6}};
-  EXPECT_GT(test::checkMesh(square, coarse).tVertices, 0u);
+  EXPECT_GT(checkMesh(square, coarse).tVertices, 0u);
 
   Mesh flipped = mesh;
   std::swap(flipped.elements[0][1], flipped.elements[0][3]);
-  EXPECT_GT(test::checkMesh(square, flipped).notCounterClockwiseOrConvex, 0u);
+  EXPECT_GT(checkMesh(square, flipped).notCounterClockwiseOrConvex, 0u);
 }
 
 }  // namespace

@@ -1,0 +1,123 @@
+#include "app/cli/mesh_command.h"
+
+#include "app/image/atomic_file.h"
+#include "engine/polygon_case.h"
+#include "engine/scene_loader.h"
+#include "engine/surface_mesh.h"
+#include "mesher/mesh_check.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+
+namespace app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using OrderedJson = nlohmann::ordered_json;
+
+// What one meshed polygon (a surface or the polygon case) adds to the report.
+struct Tally {
+  size_t elements = 0, quads = 0, vertices = 0, tVertices = 0;
+  double smallestAngle = 180;
+
+  void add(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh) {
+    const mesher::MeshCheck check = mesher::checkMesh(polygon, mesh);
+    elements += mesh.elements.size();
+    quads += mesh.quadCount();
+    vertices += mesh.vertices.size();
+    tVertices += check.tVertices;
+    smallestAngle = std::min(smallestAngle, check.smallestAngleDeg);
+  }
+};
+
+// Runs `meshOnce` `repeat` times and returns the best wall time in milliseconds.
+template <typename MeshOnce>
+double bestOf(int repeat, MeshOnce meshOnce) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < std::max(1, repeat); ++i) {
+    const auto start = Clock::now();
+    meshOnce();
+    best = std::min(best, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+  return best;
+}
+
+OrderedJson elementJson(const std::array<uint32_t, 4>& e) {
+  OrderedJson out = OrderedJson::array({e[0], e[1], e[2]});
+  if (e[3] != mesher::Mesh::kNone) out.push_back(e[3]);
+  return out;
+}
+
+}  // namespace
+
+int runMesh(const MeshOptions& options) {
+  const std::string text = engine::readInputFile(options.input);
+  const engine::JsonReader in(options.input);
+  const engine::Json root = in.parse(text);
+
+  Tally tally;
+  double meshMs = 0;
+  OrderedJson dump;
+  if (engine::isPolygonCase(root)) {
+    const engine::PolygonCase polygonCase = engine::parsePolygonCase(root, in);
+    const std::optional<double> patch = options.patchSize ? options.patchSize : polygonCase.patchSize;
+    if (!patch) in.fail(engine::Diag::MissingField, "patch_size", "give it in the file or with --patch-size");
+    mesher::Mesh mesh;
+    meshMs = bestOf(options.repeat, [&] { mesh = mesher::meshPolygon(polygonCase.polygon, {*patch}); });
+    tally.add(polygonCase.polygon, mesh);
+    if (!options.dump.empty()) {
+      dump["vertices"] = OrderedJson::array();
+      for (const mesher::Vec2& p : mesh.vertices) dump["vertices"].push_back({p.x, p.y});
+      dump["elements"] = OrderedJson::array();
+      for (const auto& e : mesh.elements) dump["elements"].push_back(elementJson(e));
+    }
+  } else {
+    engine::Scene scene = engine::parseScene(text, options.input);
+    if (options.patchSize)
+      for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
+    std::vector<engine::SurfaceMesh> meshes(scene.surfaces.size());
+    meshMs = bestOf(options.repeat, [&] {
+      for (size_t i = 0; i < scene.surfaces.size(); ++i) meshes[i] = engine::meshSurface(scene.surfaces[i]);
+    });
+    for (const engine::SurfaceMesh& m : meshes) tally.add(m.polygon, m.mesh);
+    if (!options.dump.empty()) {
+      dump["vertices"] = OrderedJson::array();
+      dump["elements"] = OrderedJson::array();
+      dump["surface"] = OrderedJson::array();
+      uint32_t first = 0;
+      for (size_t i = 0; i < meshes.size(); ++i) {
+        for (const engine::Vec3& p : meshes[i].positions) dump["vertices"].push_back({p.x, p.y, p.z});
+        for (auto e : meshes[i].mesh.elements) {
+          for (uint32_t& v : e)
+            if (v != mesher::Mesh::kNone) v += first;
+          dump["elements"].push_back(elementJson(e));
+          dump["surface"].push_back(i);
+        }
+        first += static_cast<uint32_t>(meshes[i].positions.size());
+      }
+    }
+  }
+
+  if (!options.dump.empty()) writeFileAtomically(options.dump, dump.dump() + "\n");
+  if (!options.stats.empty()) {
+    const OrderedJson stats = {
+        {"elements", tally.elements},   {"quads", tally.quads},
+        {"triangles", tally.elements - tally.quads}, {"vertices", tally.vertices},
+        {"t_vertices", tally.tVertices}, {"min_angle_deg", tally.smallestAngle},
+        {"mesh_ms", meshMs},
+    };
+    writeFileAtomically(options.stats, stats.dump(2) + "\n");
+  }
+  std::printf("%zu elements (%zu quads, %zu triangles), %zu vertices, %zu T-vertices, smallest angle %.2f deg, %.3f ms\n",
+              tally.elements, tally.quads, tally.elements - tally.quads, tally.vertices, tally.tVertices,
+              tally.smallestAngle, meshMs);
+  return 0;
+}
+
+}  // namespace app

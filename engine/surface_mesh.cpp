@@ -1,0 +1,60 @@
+#include "engine/surface_mesh.h"
+
+#include <glm/geometric.hpp>
+
+namespace engine {
+
+namespace {
+
+// A 2-D frame in the surface's plane whose counter-clockwise is counter-clockwise about the
+// front normal. Surfaces facing along a world axis use two world axes, so their coordinates are
+// exact and axis-aligned edges stay axis-aligned for the quadtree.
+struct PlaneFrame {
+  Vec3 origin, u, v;
+  mesher::Vec2 project(const Vec3& p) const { return {glm::dot(p - origin, u), glm::dot(p - origin, v)}; }
+  Vec3 lift(mesher::Vec2 p, const Vec3& normal, double offset) const {
+    return origin + u * p.x + v * p.y + normal * (offset - glm::dot(origin, normal));
+  }
+};
+
+PlaneFrame planeFrame(const Surface& s) {
+  const Vec3 n = s.normal;
+  const Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  if (n == x) return {Vec3{0}, y, z};
+  if (n == -x) return {Vec3{0}, z, y};
+  if (n == y) return {Vec3{0}, z, x};
+  if (n == -y) return {Vec3{0}, x, z};
+  if (n == z) return {Vec3{0}, x, y};
+  if (n == -z) return {Vec3{0}, y, x};
+  size_t longest = 0;
+  double best = -1;
+  for (size_t i = 0; i < s.outer.size(); ++i) {
+    const double len = glm::length(s.outer[(i + 1) % s.outer.size()] - s.outer[i]);
+    if (len > best) best = len, longest = i;
+  }
+  const Vec3 u = glm::normalize(s.outer[(longest + 1) % s.outer.size()] - s.outer[longest]);
+  return {s.outer[longest], u, glm::cross(s.normal, u)};
+}
+
+}  // namespace
+
+SurfaceMesh meshSurface(const Surface& surface) {
+  const PlaneFrame frame = planeFrame(surface);
+  SurfaceMesh result;
+  for (const Vec3& p : surface.outer) result.polygon.outer.push_back(frame.project(p));
+  for (const Ring3& hole : surface.holes) {
+    mesher::Ring2& ring = result.polygon.holes.emplace_back();
+    for (const Vec3& p : hole) ring.push_back(frame.project(p));
+  }
+  result.mesh = mesher::meshPolygon(result.polygon, {surface.patchSize});
+
+  // The surface's own points come first in the mesh, in the same order: keep them exact.
+  result.positions = surface.outer;
+  for (const Ring3& hole : surface.holes) result.positions.insert(result.positions.end(), hole.begin(), hole.end());
+  const double offset = surface.planeOffset();
+  for (size_t i = result.positions.size(); i < result.mesh.vertices.size(); ++i)
+    result.positions.push_back(frame.lift(result.mesh.vertices[i], surface.normal, offset));
+  return result;
+}
+
+}  // namespace engine

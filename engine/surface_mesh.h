@@ -1,0 +1,22 @@
+// A surface meshed by the modified quadtree (mesher/mesher.h): the surface laid into its plane,
+// meshed there at its patch size, and the mesh's vertices lifted back into the world.
+#pragma once
+
+#include "engine/scene.h"
+#include "mesher/mesher.h"
+
+#include <vector>
+
+namespace engine {
+
+struct SurfaceMesh {
+  mesher::PolygonWithHoles polygon;  // the surface in plane coordinates (outer, then holes)
+  mesher::Mesh mesh;                 // in plane coordinates; elements counter-clockwise from the front
+  std::vector<Vec3> positions;       // per mesh vertex, world; the surface's own points exact
+};
+
+// Plane coordinates are two world axes when the surface faces along one (exact coordinates,
+// axis-aligned edges stay axis-aligned), else axes along its longest outer edge.
+SurfaceMesh meshSurface(const Surface& surface);
+
+}  // namespace engine

@@ -1,0 +1,134 @@
+#include "mesher/mesh_check.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace mesher {
+
+namespace {
+
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+double distanceToSegment(Vec2 p, Vec2 a, Vec2 b, double& t) {
+  const Vec2 d = b - a;
+  t = glm::dot(p - a, d) / glm::dot(d, d);
+  return glm::length(p - (a + std::clamp(t, 0.0, 1.0) * d));
+}
+
+uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t{a} << 32 | b; }
+
+// Undirected edges bucketed on a uniform grid, for "which edges pass near this point".
+class EdgeGrid {
+ public:
+  EdgeGrid(const Mesh& mesh, const std::vector<std::pair<uint32_t, uint32_t>>& edges) : mesh_(mesh), edges_(edges) {
+    lo_ = hi_ = mesh.vertices.empty() ? Vec2{0} : mesh.vertices.front();
+    for (const Vec2& p : mesh.vertices) lo_ = glm::min(lo_, p), hi_ = glm::max(hi_, p);
+    const double area = std::max((hi_.x - lo_.x) * (hi_.y - lo_.y), 1e-300);
+    cell_ = std::max(std::sqrt(area / std::max<double>(1, static_cast<double>(edges.size()))), 1e-300);
+    for (uint32_t e = 0; e < edges.size(); ++e) {
+      const Vec2 a = mesh.vertices[edges[e].first], b = mesh.vertices[edges[e].second];
+      const auto [x0, y0] = cellOf(glm::min(a, b));
+      const auto [x1, y1] = cellOf(glm::max(a, b));
+      for (int64_t x = x0; x <= x1; ++x)
+        for (int64_t y = y0; y <= y1; ++y) cells_[key(x, y)].push_back(e);
+    }
+  }
+
+  template <typename Visit>
+  void near(Vec2 p, Visit visit) const {
+    const auto [x, y] = cellOf(p);
+    const auto found = cells_.find(key(x, y));
+    if (found == cells_.end()) return;
+    for (uint32_t e : found->second) visit(edges_[e]);
+  }
+
+ private:
+  std::pair<int64_t, int64_t> cellOf(Vec2 p) const {
+    return {static_cast<int64_t>(std::floor((p.x - lo_.x) / cell_)), static_cast<int64_t>(std::floor((p.y - lo_.y) / cell_))};
+  }
+  static uint64_t key(int64_t x, int64_t y) { return static_cast<uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ static_cast<uint64_t>(y); }
+
+  const Mesh& mesh_;
+  const std::vector<std::pair<uint32_t, uint32_t>>& edges_;
+  Vec2 lo_, hi_;
+  double cell_ = 1;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
+};
+
+}  // namespace
+
+MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
+  MeshCheck check;
+  std::vector<Ring2> rings{polygon.outer};
+  rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
+  check.polygonArea = std::abs(signedArea(polygon.outer));
+  for (const Ring2& h : polygon.holes) check.polygonArea -= std::abs(signedArea(h));
+  double size = 0;
+  for (const Vec2& p : polygon.outer) size = std::max({size, std::abs(p.x), std::abs(p.y)});
+  const double extent = mesher::extent(polygon.outer);
+  // On the boundary: within 1e-9 of the polygon's size. A T-vertex: on an element edge up to the
+  // rounding of computed points (1e-12 of the coordinates), not merely close to it, as the
+  // corners of a sliver at a sharp spike are.
+  const double tolerance = 1e-9 * std::max(extent, 1e-9 * size);
+  const double onEdge = 1e-12 * (size + extent);
+
+  size_t index = 0;
+  for (const Ring2& ring : rings)
+    for (const Vec2& p : ring) check.movedInputVertices += index >= mesh.vertices.size() || mesh.vertices[index++] != p;
+
+  // Element shape, area, and how often each directed edge is used.
+  std::unordered_map<uint64_t, int> edgeUse;
+  edgeUse.reserve(mesh.elements.size() * 4);
+  for (const auto& e : mesh.elements) {
+    const size_t n = e[3] == Mesh::kNone ? 3 : 4;
+    double area = 0, diameter = 0;
+    for (size_t k = 0; k < n; ++k) {
+      const Vec2 a = mesh.vertices[e[k]], b = mesh.vertices[e[(k + 1) % n]], c = mesh.vertices[e[(k + 2) % n]];
+      area += 0.5 * cross(a, b);
+      if (!(cross(b - a, c - b) > 0)) ++check.notCounterClockwiseOrConvex;
+      const Vec2 u = a - b, v = c - b;
+      check.smallestAngleDeg = std::min(check.smallestAngleDeg, std::atan2(std::abs(cross(u, v)), glm::dot(u, v)) * 180 / std::numbers::pi);
+      for (size_t j = 0; j < n; ++j) diameter = std::max(diameter, glm::length(mesh.vertices[e[j]] - a));
+      if (++edgeUse[edgeKey(e[k], e[(k + 1) % n])] > 1) ++check.repeatedEdges;
+    }
+    check.elementArea += area;
+    check.largestDiameter = std::max(check.largestDiameter, diameter);
+  }
+
+  // Edges used once must lie on the polygon's boundary.
+  std::vector<std::pair<uint32_t, uint32_t>> undirected;
+  undirected.reserve(edgeUse.size());
+  for (const auto& [key, uses] : edgeUse) {
+    const auto a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+    if (a < b || !edgeUse.count(edgeKey(b, a))) undirected.push_back({a, b});
+    if (edgeUse.count(edgeKey(b, a))) continue;
+    const Vec2 mid = 0.5 * (mesh.vertices[a] + mesh.vertices[b]);
+    bool onBoundary = false;
+    for (const Ring2& ring : rings)
+      for (size_t i = 0; i < ring.size() && !onBoundary; ++i) {
+        double t;
+        onBoundary = distanceToSegment(mid, ring[i], ring[(i + 1) % ring.size()], t) <= tolerance;
+      }
+    check.unmatchedInnerEdges += !onBoundary;
+  }
+
+  // No vertex may lie inside an element edge it is not a corner of.
+  const EdgeGrid grid(mesh, undirected);
+  for (uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+    grid.near(mesh.vertices[v], [&](const std::pair<uint32_t, uint32_t>& edge) {
+      if (edge.first == v || edge.second == v) return;
+      double t;
+      const double d = distanceToSegment(mesh.vertices[v], mesh.vertices[edge.first], mesh.vertices[edge.second], t);
+      if (d <= onEdge && t > 1e-12 && t < 1 - 1e-12) ++check.tVertices;
+    });
+  }
+  return check;
+}
+
+}  // namespace mesher
