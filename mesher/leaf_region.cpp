@@ -55,10 +55,32 @@ Vec2 onSideLine(Vec2 a, Vec2 b, int side, double x0, double y0, double x1, doubl
   return {snapToGrid(std::clamp(x, x0, x1)), line};
 }
 
+// The template key of an interior square's border points: the sides holding exactly their
+// midpoint, or -1 when some side holds anything else (an unbalanced neighbour).
+int midpointSides(const std::vector<RegionPoint>& points, double x0, double y0, double s) {
+  if (points.size() > 8) return -1;
+  int key = 0;
+  for (const RegionPoint& p : points) {
+    const double dx = p.at.x - x0, dy = p.at.y - y0;
+    const bool corner = (dx == 0 || dx == s) && (dy == 0 || dy == s);
+    if (corner) continue;
+    if (dy == 0 && 2 * dx == s) key |= 4;
+    else if (dy == s && 2 * dx == s) key |= 8;
+    else if (dx == 0 && 2 * dy == s) key |= 1;
+    else if (dx == s && 2 * dy == s) key |= 2;
+    else return -1;
+  }
+  return key;
+}
+
 }  // namespace
 
-LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
-  LeafRegion region;
+const LeafRegion& LeafRegionBuilder::build(int32_t q) {
+  const Quadtree& tree = tree_;
+  LeafRegion& region = region_;
+  region.ring.clear();
+  region.hinge = -1;
+  region.templateKey = -1;
   const Quadrant& leaf = tree[q];
   if (leaf.status == QuadStatus::Outside) return region;
   const double s = static_cast<double>(tree.edgeLength(leaf));
@@ -69,8 +91,9 @@ LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
 
   // Every point of the border that is a mesh vertex: corners, finer neighbours' corners, the
   // leaf's vertex when it lies on the border.
-  std::vector<RegionPoint> onBorder{{{x0, y0}}, {{x1, y0}}, {{x1, y1}}, {{x0, y1}}};
-  std::vector<int32_t> across;
+  std::vector<RegionPoint>& onBorder = onBorder_;
+  onBorder.assign({{{x0, y0}}, {{x1, y0}}, {{x1, y1}}, {{x0, y1}}});
+  std::vector<int32_t>& across = across_;
   for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
     across.clear();
     tree.neighbors(q, side, across);
@@ -94,7 +117,8 @@ LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
   if (vertexOnBorder) onBorder.push_back({in.vertices[static_cast<size_t>(leaf.vertex)], leaf.vertex});
 
   // The polygon's boundary through the leaf, from where it enters to where it leaves.
-  std::vector<RegionPoint> path;
+  std::vector<RegionPoint>& path = path_;
+  path.clear();
   Vec2 hinge{0};
   if (leaf.edgeCount > 0) {
     auto crossing = [&](uint32_t e, bool entry) {
@@ -130,7 +154,8 @@ LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
 
   if (path.empty()) {
     if (leaf.status != QuadStatus::Inside) return region;
-    region.ring = onBorder;
+    region.ring.assign(onBorder.begin(), onBorder.end());
+    if (!vertexOnBorder) region.templateKey = midpointSides(onBorder, x0, y0, s);
     return region;
   }
 
@@ -138,8 +163,9 @@ LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
   // square to where it enters.
   const double from = border.param(path.back().at), to = border.param(path.front().at);
   const double span = to > from ? to - from : to + 4 * s - from;
-  region.ring = path;
-  std::vector<std::pair<double, RegionPoint>> walk;
+  region.ring.assign(path.begin(), path.end());
+  std::vector<std::pair<double, RegionPoint>>& walk = walk_;
+  walk.clear();
   for (const RegionPoint& p : onBorder) {
     double offset = border.param(p.at) - from;
     if (offset < 0) offset += 4 * s;
@@ -148,7 +174,8 @@ LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
   std::sort(walk.begin(), walk.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& [offset, p] : walk) region.ring.push_back(p);
   // Drop points repeated next to each other (a crossing on a corner, the vertex on the border).
-  std::vector<RegionPoint> ring;
+  std::vector<RegionPoint>& ring = ring_;
+  ring.clear();
   for (const RegionPoint& p : region.ring) {
     if (!ring.empty() && ring.back().at == p.at) {
       if (p.inputVertex >= 0) ring.back() = p;
@@ -160,7 +187,7 @@ LeafRegion leafRegion(const Quadtree& tree, int32_t q) {
     if (ring.back().inputVertex >= 0) ring.front() = ring.back();
     ring.pop_back();
   }
-  region.ring = std::move(ring);
+  region.ring.swap(ring);
   if (region.ring.size() < 3) {
     region.ring.clear();
     return region;

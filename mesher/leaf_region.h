@@ -16,12 +16,28 @@ struct RegionPoint {
 struct LeafRegion {
   std::vector<RegionPoint> ring;  // counter-clockwise; empty when the leaf has no inside
   int hinge = -1;                 // index in ring of the hinge vertex of 5.4; -1 when no edge passes
+  // Interior squares (no edge, no vertex): which of their sides carry one midpoint T-vertex, as
+  // bits (1 west, 2 east, 4 south, 8 north); their rings then start at the lower-left corner and
+  // differ only in that. -1 for every other leaf.
+  int templateKey = -1;
 };
 
 // Builds the region of leaf q: its corners and the T-vertices of finer neighbours on the inside
 // part of its border, the crossings of its stored edges and its vertex. Crossings are computed
 // from the edge and the grid line alone, so the leaves on both sides of a line agree exactly;
-// crossings within 1e-6 tree units of a grid point snap to it.
-LeafRegion leafRegion(const Quadtree& tree, int32_t q);
+// crossings within kGridSnap of a grid point snap to it. The builder keeps its scratch memory
+// from leaf to leaf; a returned region lives until the next build.
+class LeafRegionBuilder {
+ public:
+  explicit LeafRegionBuilder(const Quadtree& tree) : tree_(tree) {}
+  const LeafRegion& build(int32_t q);
+
+ private:
+  const Quadtree& tree_;
+  LeafRegion region_;
+  std::vector<RegionPoint> onBorder_, path_, ring_;
+  std::vector<int32_t> across_;
+  std::vector<std::pair<double, RegionPoint>> walk_;
+};
 
 }  // namespace mesher

@@ -7,25 +7,70 @@
 
 #include <cstring>
 #include <stdexcept>
-#include <unordered_map>
+#include <algorithm>
+#include <bit>
 
 namespace mesher {
 
 namespace {
 
-// Mesh vertices by their exact tree coordinates: leaves sharing a point compute it bit for bit
-// alike (corners are integers, crossings come from the edge and the line alone).
-struct PointKey {
-  double x, y;
-  bool operator==(const PointKey& o) const { return x == o.x && y == o.y; }
-};
-struct PointHash {
-  size_t operator()(const PointKey& k) const {
-    uint64_t a, b;
-    std::memcpy(&a, &k.x, sizeof a);
-    std::memcpy(&b, &k.y, sizeof b);
-    return std::hash<uint64_t>()(a * 0x9E3779B97F4A7C15ull ^ b);
+// Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
+// alike (corners are integers, crossings come from the edge and the line alone). Open addressing
+// over ids only, the points themselves kept in id order, so a quarter of a million points cost
+// no allocation each and the table stays small.
+class PointIds {
+ public:
+  explicit PointIds(size_t expected) {
+    slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
+    points_.reserve(expected);
   }
+
+  // The id of p, adding it with the next id when it is new (`added` says which).
+  uint32_t findOrAdd(Vec2 p, bool& added) {
+    if (2 * (points_.size() + 1) > slots_.size()) grow();
+    size_t slot = hash(p) & (slots_.size() - 1);
+    while (slots_[slot] != kEmpty) {
+      if (points_[slots_[slot]] == p) {
+        added = false;
+        return slots_[slot];
+      }
+      slot = (slot + 1) & (slots_.size() - 1);
+    }
+    const auto id = static_cast<uint32_t>(points_.size());
+    slots_[slot] = id;
+    points_.push_back(p);
+    added = true;
+    return id;
+  }
+
+ private:
+  static constexpr uint32_t kEmpty = 0xffffffffu;
+
+  // splitmix64's finaliser: coordinates that are small integers differ only in their high bits.
+  static uint64_t mix(uint64_t x) {
+    x ^= x >> 30;
+    x *= 0xBF58476D1CE4E5B9ull;
+    x ^= x >> 27;
+    x *= 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+  }
+  static size_t hash(Vec2 p) {
+    uint64_t a, b;
+    std::memcpy(&a, &p.x, sizeof a);
+    std::memcpy(&b, &p.y, sizeof b);
+    return static_cast<size_t>(mix(a ^ mix(b)));
+  }
+  void grow() {
+    slots_.assign(slots_.size() * 2, kEmpty);
+    for (uint32_t id = 0; id < points_.size(); ++id) {
+      size_t slot = hash(points_[id]) & (slots_.size() - 1);
+      while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
+      slots_[slot] = id;
+    }
+  }
+
+  std::vector<uint32_t> slots_;
+  std::vector<Vec2> points_;  // tree coordinates, by id
 };
 
 }  // namespace
@@ -48,17 +93,27 @@ Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) 
   Quadtree& tree = built.tree;
 
   Mesh mesh;
-  std::unordered_map<PointKey, uint32_t, PointHash> ids;
+  const std::vector<int32_t> leaves = tree.leaves();
+  PointIds ids(leaves.size() + tree.input.vertices.size());
   mesh.vertices = polygon.outer;
   for (const Ring2& hole : polygon.holes) mesh.vertices.insert(mesh.vertices.end(), hole.begin(), hole.end());
-  for (uint32_t v = 0; v < tree.input.vertices.size(); ++v)
-    ids.emplace(PointKey{tree.input.vertices[v].x, tree.input.vertices[v].y}, v);
+  // Input vertices take ids 0..n-1, as in the mesh (two at one tree point cannot occur: the
+  // tree would have refused them).
+  bool added;
+  for (const Vec2& v : tree.input.vertices) ids.findOrAdd(v, added);
 
+  // Scratch reused for every leaf. Interior squares differ only in which sides carry a
+  // T-vertex, so their subdomains (the templates of 5.3) are worked out once per pattern.
+  mesh.vertices.reserve(leaves.size() * 2);
+  mesh.elements.reserve(leaves.size() * 2);
   std::vector<Vec2> ring;
   std::vector<uint32_t> ringIds;
   std::vector<RingElement> pieces;
-  for (int32_t q : tree.leaves()) {
-    const LeafRegion region = leafRegion(tree, q);
+  std::array<std::vector<RingElement>, 16> templates;
+  std::array<bool, 16> haveTemplate{};
+  LeafRegionBuilder regions(tree);
+  for (int32_t q : leaves) {
+    const LeafRegion& region = regions.build(q);
     if (region.ring.empty()) continue;
     ring.clear();
     ringIds.clear();
@@ -67,16 +122,25 @@ Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) 
       if (p.inputVertex >= 0) {
         id = static_cast<uint32_t>(p.inputVertex);
       } else {
-        const auto [it, added] = ids.emplace(PointKey{p.at.x, p.at.y}, static_cast<uint32_t>(mesh.vertices.size()));
+        id = ids.findOrAdd(p.at, added);
         if (added) mesh.vertices.push_back(built.frame.toPlane(p.at));
-        id = it->second;
       }
       ringIds.push_back(id);
       ring.push_back(mesh.vertices[id]);
     }
-    pieces.clear();
-    removeSubdomains(ring, region.hinge, pieces);
-    for (const RingElement& piece : pieces) {
+    const std::vector<RingElement>* elements = &pieces;
+    if (region.templateKey >= 0) {
+      const auto key = static_cast<size_t>(region.templateKey);
+      if (!haveTemplate[key]) {
+        removeSubdomains(ring, -1, templates[key]);
+        haveTemplate[key] = true;
+      }
+      elements = &templates[key];
+    } else {
+      pieces.clear();
+      removeSubdomains(ring, region.hinge, pieces);
+    }
+    for (const RingElement& piece : *elements) {
       std::array<uint32_t, 4> element{Mesh::kNone, Mesh::kNone, Mesh::kNone, Mesh::kNone};
       for (uint8_t k = 0; k < piece.count; ++k) element[k] = ringIds[piece.v[k]];
       mesh.elements.push_back(element);

@@ -220,39 +220,39 @@ int32_t Quadtree::leafAt(Vec2 p) const {
   return q;
 }
 
+int32_t Quadtree::adjacent(int32_t q, Side side) const {
+  // Children are numbered SW 0, SE 1, NW 2, NE 3: bit 0 is east, bit 1 north. A sibling across
+  // the side is found at once; otherwise the parent's neighbour is, and its mirrored child.
+  const Quadrant& node = (*this)[q];
+  if (node.parent < 0) return -1;
+  const int32_t first = (*this)[node.parent].firstChild;
+  const int child = q - first;
+  const bool horizontal = side == Side::West || side == Side::East;
+  const int bit = horizontal ? 1 : 2;
+  const bool towardHigh = side == Side::East || side == Side::North;
+  if (((child & bit) != 0) != towardHigh) return first + (child ^ bit);
+  const int32_t across = adjacent(node.parent, side);
+  if (across < 0 || (*this)[across].isLeaf()) return across;
+  return (*this)[across].firstChild + (child ^ bit);
+}
+
 void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const {
-  const Quadrant& leaf = (*this)[q];
-  const int64_t s = edgeLength(leaf);
-  const int64_t root = int64_t{1} << maxDepth;
-  // A point just across the side, at the side's lower or left end.
-  int64_t x = leaf.x, y = leaf.y;
-  switch (side) {
-    case Side::West: x -= 1; break;
-    case Side::East: x += s; break;
-    case Side::South: y -= 1; break;
-    case Side::North: y += s; break;
-  }
-  if (x < 0 || y < 0 || x >= root || y >= root) return;
-  // Descend to the quadrant across of at most the leaf's size.
-  int32_t r = 0;
-  while (!(*this)[r].isLeaf() && (*this)[r].level < leaf.level) {
-    const Quadrant& node = (*this)[r];
-    const int64_t half = edgeLength(node) / 2;
-    r = node.firstChild + (x >= node.x + half ? 1 : 0) + (y >= node.y + half ? 2 : 0);
-  }
-  // A leaf there is the one neighbour; otherwise its leaves along the facing side.
-  std::vector<int32_t> stack{r};
-  while (!stack.empty()) {
-    const int32_t n = stack.back();
-    stack.pop_back();
-    const Quadrant& node = (*this)[n];
+  const int32_t r = adjacent(q, side);
+  if (r < 0) return;
+  // A leaf there is the one neighbour; otherwise its leaves along the facing side, found in
+  // `out` itself (no allocation): a node is replaced by its first facing child and the second is
+  // appended.
+  static constexpr int32_t facing[4][2] = {{1, 3}, {0, 2}, {2, 3}, {0, 1}};  // SW 0, SE 1, NW 2, NE 3
+  const size_t start = out.size();
+  out.push_back(r);
+  for (size_t i = start; i < out.size();) {
+    const Quadrant& node = (*this)[out[i]];
     if (node.isLeaf()) {
-      out.push_back(n);
+      ++i;
       continue;
     }
-    // Children facing back toward the leaf: SW 0, SE 1, NW 2, NE 3.
-    static constexpr int32_t facing[4][2] = {{1, 3}, {0, 2}, {2, 3}, {0, 1}};
-    for (int32_t c : facing[static_cast<int>(side)]) stack.push_back(node.firstChild + c);
+    out[i] = node.firstChild + facing[static_cast<int>(side)][0];
+    out.push_back(node.firstChild + facing[static_cast<int>(side)][1]);
   }
 }
 

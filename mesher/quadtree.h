@@ -56,8 +56,12 @@ class Quadtree {
   std::vector<int32_t> leaves() const;
   // The leaf whose half-open square [x, x + s) x [y, y + s) holds p; -1 outside the root.
   int32_t leafAt(Vec2 p) const;
-  // The leaves sharing part of `side` of leaf q (one coarser or equal leaf, or several finer).
+  // The leaves sharing part of `side` of leaf q (one coarser or equal leaf, or several finer),
+  // appended to `out`.
   void neighbors(int32_t q, Side side, std::vector<int32_t>& out) const;
+  // The quadrant across `side` of quadrant q at q's level, or the coarser leaf there; -1 at the
+  // root's border. Constant time on average (Samet's neighbour finding).
+  int32_t adjacent(int32_t q, Side side) const;
   // Whether point p of leaf q's closed square lies inside the polygon, from the leaf's own
   // vertex and edges (its status when it holds none). p must not lie on a stored edge.
   bool insideAt(int32_t q, Vec2 p) const;
