@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 namespace mesher {
 
@@ -16,19 +17,21 @@ namespace {
 
 // Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
 // alike (corners are integers, crossings come from the edge and the line alone). Open addressing
-// over ids only, the points themselves kept in id order, so a quarter of a million points cost
-// no allocation each and the table stays small.
+// over ids only, the points themselves kept in id order. Slots follow the Morton (Z) order of
+// the point in the root square, the order the leaves are visited in, so lookups of a million
+// points stay in cache instead of jumping across the table.
 class PointIds {
  public:
-  explicit PointIds(size_t expected) {
+  PointIds(size_t expected, double rootSize) : toUnit_(1 / rootSize) {
     slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
+    shift_ = 64 - std::countr_zero(slots_.size());
     points_.reserve(expected);
   }
 
   // The id of p, adding it with the next id when it is new (`added` says which).
   uint32_t findOrAdd(Vec2 p, bool& added) {
     if (2 * (points_.size() + 1) > slots_.size()) grow();
-    size_t slot = hash(p) & (slots_.size() - 1);
+    size_t slot = slotOf(p);
     while (slots_[slot] != kEmpty) {
       if (points_[slots_[slot]] == p) {
         added = false;
@@ -46,29 +49,30 @@ class PointIds {
  private:
   static constexpr uint32_t kEmpty = 0xffffffffu;
 
-  // splitmix64's finaliser: coordinates that are small integers differ only in their high bits.
-  static uint64_t mix(uint64_t x) {
-    x ^= x >> 30;
-    x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 27;
-    x *= 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
+  static uint64_t spreadBits(uint64_t v) {  // 32 bits to the even bits of 64
+    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
+    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
+    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
+    v = (v | (v << 2)) & 0x3333333333333333ull;
+    return (v | (v << 1)) & 0x5555555555555555ull;
   }
-  static size_t hash(Vec2 p) {
-    uint64_t a, b;
-    std::memcpy(&a, &p.x, sizeof a);
-    std::memcpy(&b, &p.y, sizeof b);
-    return static_cast<size_t>(mix(a ^ mix(b)));
+  size_t slotOf(Vec2 p) const {
+    const auto x = static_cast<uint64_t>(std::clamp(p.x * toUnit_, 0.0, 1.0) * 4294967295.0);
+    const auto y = static_cast<uint64_t>(std::clamp(p.y * toUnit_, 0.0, 1.0) * 4294967295.0);
+    return static_cast<size_t>((spreadBits(x) | spreadBits(y) << 1) >> shift_);
   }
   void grow() {
     slots_.assign(slots_.size() * 2, kEmpty);
+    shift_ -= 1;
     for (uint32_t id = 0; id < points_.size(); ++id) {
-      size_t slot = hash(points_[id]) & (slots_.size() - 1);
+      size_t slot = slotOf(points_[id]);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
       slots_[slot] = id;
     }
   }
 
+  double toUnit_;
+  int shift_ = 0;
   std::vector<uint32_t> slots_;
   std::vector<Vec2> points_;  // tree coordinates, by id
 };
@@ -94,7 +98,7 @@ Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) 
 
   Mesh mesh;
   const std::vector<int32_t> leaves = tree.leaves();
-  PointIds ids(leaves.size() + tree.input.vertices.size());
+  PointIds ids(leaves.size() + tree.input.vertices.size(), std::exp2(tree.maxDepth));
   mesh.vertices = polygon.outer;
   for (const Ring2& hole : polygon.holes) mesh.vertices.insert(mesh.vertices.end(), hole.begin(), hole.end());
   // Input vertices take ids 0..n-1, as in the mesh (two at one tree point cannot occur: the

@@ -1,0 +1,39 @@
+// Speed of the modified quadtree mesher (thesis chapter 5, figure 6.1).
+// Run: build/tests/walkrad_bench --benchmark_filter=mesh (figures in docs/BENCHMARKS.md).
+#include "engine/scene_loader.h"
+#include "engine/surface_mesh.h"
+#include "mesher/mesher.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+// The kitchen at the thesis' patch sizes (figure 6.1: 24, 20, 16, 12 and 8 inches).
+void meshKitchen(benchmark::State& state) {
+  engine::Scene scene = engine::loadScene(std::string(WALKRAD_ASSETS) + "/kitchen.json");
+  for (engine::Surface& s : scene.surfaces) s.patchSize = static_cast<double>(state.range(0));
+  size_t elements = 0;
+  for (auto _ : state) {
+    elements = 0;
+    for (const engine::Surface& s : scene.surfaces) elements += engine::meshSurface(s).mesh.elements.size();
+  }
+  state.counters["elements"] = static_cast<double>(elements);
+  state.counters["elements/s"] = benchmark::Counter(static_cast<double>(elements), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(meshKitchen)->Arg(24)->Arg(20)->Arg(16)->Arg(12)->Arg(8)->Unit(benchmark::kMillisecond);
+
+// One floor with two holes, from 10 thousand to about a million elements: time per element
+// should stay flat (linear growth).
+void meshFloor(benchmark::State& state) {
+  const mesher::PolygonWithHoles floor{{{0, 0}, {45, 0}, {45, 45}, {0, 45}},
+                                       {{{10, 10}, {10, 12}, {13, 12}, {13, 10}}, {{30.3, 20.1}, {31.7, 22.2}, {33, 20}}}};
+  const double patch = 45.0 / static_cast<double>(state.range(0));
+  size_t elements = 0;
+  for (auto _ : state) elements = mesher::meshPolygon(floor, {patch}).elements.size();
+  state.counters["elements"] = static_cast<double>(elements);
+  state.counters["elements/s"] = benchmark::Counter(static_cast<double>(elements), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["ns/element"] = benchmark::Counter(static_cast<double>(elements), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(meshFloor)->Arg(100)->Arg(200)->Arg(450)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
