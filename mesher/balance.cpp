@@ -1,5 +1,7 @@
 #include "mesher/balance.h"
 
+#include <stdexcept>
+
 namespace mesher {
 
 namespace {
@@ -30,6 +32,7 @@ std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds) 
         const Quadrant& neighbor = tree[n];
         if (neighbor.status == QuadStatus::Outside || neighbor.level >= tree[q].level - 1) continue;
         if (!tree.splitLeaf(n)) return std::nullopt;
+        tree.quadrants[static_cast<size_t>(n)].forced = true;
         pushLeavesBelow(tree, n, seeds);
         seeds.push_back(q);  // its neighbour there may still be too coarse
         ++splits;
@@ -40,5 +43,15 @@ std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds) 
 }
 
 std::optional<size_t> balance(Quadtree& tree) { return balanceAround(tree, tree.leaves()); }
+
+PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize) {
+  PolygonTree built = buildPolygonTree(polygon, patchSize);
+  for (int deeper = 8; !balance(built.tree); deeper += 8) {
+    if (built.tree.maxDepth >= kDeepestTree) throw std::invalid_argument("polygon corner too sharp to balance");
+    built = buildPolygonTree(polygon, patchSize, deeper);
+  }
+  built.tree.changes.clear();
+  return built;
+}
 
 }  // namespace mesher

@@ -19,4 +19,9 @@ std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
 // Balances the whole tree.
 std::optional<size_t> balance(Quadtree& tree);
 
+// A polygon's balanced tree (buildPolygonTree, then balance), built deeper when balancing splits
+// a leaf that held a sharp corner whole and its edges then need more levels than the tree has.
+// Throws std::invalid_argument as buildPolygonTree does.
+PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize);
+
 }  // namespace mesher

@@ -118,9 +118,15 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
     check.unmatchedInnerEdges += !onBoundary;
   }
 
-  // No vertex may lie inside an element edge it is not a corner of.
+  // No vertex of an element may lie inside an element edge it is not a corner of. (Vertices no
+  // element uses, as a coarsened mesh keeps, are not part of the mesh.)
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const auto& e : mesh.elements)
+    for (uint32_t v : e)
+      if (v != Mesh::kNone) used[v] = true;
   const EdgeGrid grid(mesh, undirected);
   for (uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!used[v]) continue;
     grid.near(mesh.vertices[v], [&](const std::pair<uint32_t, uint32_t>& edge) {
       if (edge.first == v || edge.second == v) return;
       double t;

@@ -118,6 +118,7 @@ bool Quadtree::splitLeaf(int32_t q) {
   if ((*this)[q].level >= maxDepth) return false;
   const Quadrant old = (*this)[q];
   addChildren(q);
+  if (complete) changes.push_back({q, old});
   const int32_t first = (*this)[q].firstChild;
   for (int32_t c = first; c < first + 4; ++c) {
     if (old.vertex >= 0 && holdsPoint(c, input.vertices[static_cast<size_t>(old.vertex)]))
@@ -161,6 +162,73 @@ bool Quadtree::insideOf(const Quadrant& leaf, Vec2 p) const {
     return orient2(input.vertices[i], input.vertices[j], p) > 0;
   }
   return leaf.status == QuadStatus::Inside;
+}
+
+void Quadtree::edgesThrough(int32_t q, std::vector<uint32_t>& out) const {
+  for (uint32_t e = 0; e < input.edges.size(); ++e)
+    if (crossedBy(q, e)) out.push_back(e);
+}
+
+bool Quadtree::canMerge(int32_t q) const {
+  const Quadrant& node = (*this)[q];
+  if (node.isLeaf()) return false;
+  int32_t vertex = -1;
+  bool outside = true;
+  for (int32_t c = node.firstChild; c < node.firstChild + 4; ++c) {
+    const Quadrant& child = (*this)[c];
+    if (!child.isLeaf()) return false;
+    outside = outside && child.status == QuadStatus::Outside;
+    if (child.vertex < 0) continue;
+    if (vertex >= 0 && input.vertices[static_cast<size_t>(vertex)] != input.vertices[static_cast<size_t>(child.vertex)]) return false;
+    vertex = child.vertex;
+  }
+  // The rules of 5.2 for the merged square.
+  std::vector<uint32_t> edges;
+  edgesThrough(q, edges);
+  if (vertex < 0 && edges.size() > 1) return false;
+  if (vertex >= 0) {
+    const auto v = static_cast<uint32_t>(vertex);
+    if (edges.size() > 2) return false;
+    for (uint32_t e : edges)
+      if (e != input.edgeInto[v] && e != input.edgeOutOf[v]) return false;
+  }
+  // 2:1 balance with the neighbours that take part in it.
+  if (outside) return true;
+  std::vector<int32_t> across;
+  for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
+    across.clear();
+    neighbors(q, side, across);
+    for (int32_t n : across)
+      if ((*this)[n].status != QuadStatus::Outside && (*this)[n].level > node.level + 1) return false;
+  }
+  return true;
+}
+
+void Quadtree::undoChanges(size_t keep) {
+  while (changes.size() > keep) {
+    quadrants[static_cast<size_t>(changes.back().quadrant)] = changes.back().before;
+    changes.pop_back();
+  }
+}
+
+void Quadtree::merge(int32_t q) {
+  const Quadrant before = (*this)[q];
+  const int32_t first = before.firstChild;
+  int32_t vertex = -1;
+  for (int32_t c = first; c < first + 4; ++c)
+    if ((*this)[c].vertex >= 0) vertex = (*this)[c].vertex;
+  std::vector<uint32_t> edges;
+  edgesThrough(q, edges);
+  const QuadStatus childStatus = (*this)[first].status;
+  Quadrant& node = quadrants[static_cast<size_t>(q)];
+  node.firstChild = -1;
+  node.forced = false;
+  node.vertex = vertex;
+  node.edgeCount = static_cast<uint8_t>(edges.size());
+  std::copy(edges.begin(), edges.end(), node.edges.begin());
+  // Without edges through it the square lies wholly on one side, as each child did.
+  node.status = edges.empty() ? childStatus : QuadStatus::Boundary;
+  changes.push_back({q, before});
 }
 
 bool Quadtree::insideAt(int32_t q, Vec2 p) const {

@@ -25,6 +25,7 @@ struct Quadrant {
   int32_t firstChild = -1;          // children at firstChild + 0..3: SW, SE, NW, NE; -1: a leaf
   int32_t parent = -1;
   QuadStatus status = QuadStatus::Undefined;
+  bool forced = false;              // split only to keep 2:1 balance (may merge back when not needed)
   int32_t vertex = -1;              // the input vertex in the closed square, if any
   uint8_t edgeCount = 0;
   std::array<uint32_t, 2> edges{};  // input edges through the open square
@@ -74,12 +75,33 @@ class Quadtree {
   bool insertVertex(uint32_t v);
   bool insertEdge(int32_t q, uint32_t e);
 
+  // Whether node q's four children, all leaves, may become one leaf again (5.5): the merged
+  // square keeps the rules of 5.2, and no neighbour inside or on the boundary would be more than
+  // one level finer.
+  bool canMerge(int32_t q) const;
+  // Makes node q a leaf holding its children's vertex and edges; canMerge(q) must hold. The
+  // children's quadrants are left unused.
+  void merge(int32_t q);
+
+  // Every quadrant that stopped (split) or started (merge) being a leaf once the tree was
+  // complete, in order, since the caller last cleared the list; with the quadrant as it was.
+  struct Change {
+    int32_t quadrant;
+    Quadrant before;
+    bool isMerge() const { return !before.isLeaf(); }
+  };
+  std::vector<Change> changes;
+  // Reverts the changes after the first `keep` (a split that ran out of depth part way).
+  void undoChanges(size_t keep);
+
  private:
   void addChildren(int32_t q);
   bool holdsPoint(int32_t q, Vec2 p) const;
   bool crossedBy(int32_t q, uint32_t e) const;
   bool accepts(const Quadrant& leaf, uint32_t e) const;
   bool insideOf(const Quadrant& leaf, Vec2 p) const;
+  // The input edges through node q's open square (all of them are checked: a merge is rare).
+  void edgesThrough(int32_t q, std::vector<uint32_t>& out) const;
 };
 
 // Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`).

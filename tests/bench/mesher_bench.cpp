@@ -2,6 +2,7 @@
 // Run: build/tests/walkrad_bench --benchmark_filter=mesh (figures in docs/BENCHMARKS.md).
 #include "engine/scene_loader.h"
 #include "engine/surface_mesh.h"
+#include "mesher/adaptive_mesh.h"
 #include "mesher/mesher.h"
 
 #include <benchmark/benchmark.h>
@@ -35,5 +36,33 @@ void meshFloor(benchmark::State& state) {
   state.counters["ns/element"] = benchmark::Counter(static_cast<double>(elements), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(meshFloor)->Arg(100)->Arg(200)->Arg(450)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+namespace {
+
+// One local refine followed by the coarsen that undoes it, each with its rebalance and re-emit,
+// on a floor of 40,000 elements; the time is per operation (half a pair).
+void refineAndCoarsen(benchmark::State& state) {
+  const mesher::PolygonWithHoles floor{{{0, 0}, {45, 0}, {45, 45}, {0, 45}}, {{{10, 10}, {10, 12}, {13, 12}, {13, 10}}}};
+  mesher::AdaptiveMesh mesh(floor, {45.0 / 200});
+  std::vector<mesher::ElementId> live = mesh.elements();
+  size_t next = 0, touched = 0;
+  for (auto _ : state) {
+    next = (next + 7919) % live.size();
+    if (!mesh.alive(live[next])) {  // touched by an earlier pair: list the live ones again
+      state.PauseTiming();
+      live = mesh.elements();
+      state.ResumeTiming();
+    }
+    const mesher::MeshDelta refined = mesh.refine(live[next]);
+    const mesher::MeshDelta coarsened = mesh.coarsen(refined.added.front());
+    touched += refined.removed.size() + refined.added.size() + coarsened.removed.size() + coarsened.added.size();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * 2);
+  state.counters["elements touched/op"] = static_cast<double>(touched) / static_cast<double>(state.iterations() * 2);
+  state.counters["us/op"] = benchmark::Counter(static_cast<double>(state.iterations() * 2), benchmark::Counter::kIsRate | benchmark::Counter::kInvert, benchmark::Counter::kIs1000);
+}
+BENCHMARK(refineAndCoarsen)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -1,0 +1,192 @@
+#include "mesher/adaptive_mesh.h"
+
+#include <algorithm>
+
+namespace mesher {
+
+namespace {
+
+constexpr Side kSides[] = {Side::West, Side::East, Side::South, Side::North};
+
+void leavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out) {
+  if (tree[q].isLeaf()) {
+    out.push_back(q);
+    return;
+  }
+  for (int32_t c = 0; c < 4; ++c) leavesBelow(tree, tree[q].firstChild + c, out);
+}
+
+// False for a quadrant whose parent (or an ancestor's) has since been merged away.
+bool inTree(const Quadtree& tree, int32_t q) {
+  while (q != 0) {
+    const int32_t p = tree[q].parent;
+    if (tree[p].isLeaf() || q < tree[p].firstChild || q >= tree[p].firstChild + 4) return false;
+    q = p;
+  }
+  return true;
+}
+
+}  // namespace
+
+AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
+    : built_(buildBalancedTree(polygon, settings.patchSize)) {
+  const std::vector<int32_t> leaves = built_.tree.leaves();
+  emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
+  MeshDelta ignored;
+  for (int32_t q : leaves) emitLeaf(q, ignored);
+}
+
+AdaptiveMesh::~AdaptiveMesh() = default;
+
+const std::vector<Vec2>& AdaptiveMesh::vertices() const { return emitter_->vertices(); }
+
+std::vector<ElementId> AdaptiveMesh::elements() const {
+  std::vector<ElementId> out;
+  for (uint32_t s = 0; s < slots_.size(); ++s)
+    if (slots_[s].alive) out.push_back({s, slots_[s].generation});
+  return out;
+}
+
+bool AdaptiveMesh::alive(ElementId e) const {
+  return e.slot < slots_.size() && slots_[e.slot].alive && slots_[e.slot].generation == e.generation;
+}
+
+const std::array<uint32_t, 4>& AdaptiveMesh::corners(ElementId e) const { return slots_[e.slot].corners; }
+
+int AdaptiveMesh::level(ElementId e) const { return built_.tree[slots_[e.slot].leaf].level; }
+
+Mesh AdaptiveMesh::snapshot() const {
+  Mesh mesh;
+  mesh.vertices = vertices();
+  for (const Slot& slot : slots_)
+    if (slot.alive) mesh.elements.push_back(slot.corners);
+  return mesh;
+}
+
+void AdaptiveMesh::emitLeaf(int32_t leaf, MeshDelta& delta) {
+  const size_t size = built_.tree.quadrants.size();
+  if (leafSlots_.size() < size) leafSlots_.resize(size), leafRings_.resize(size);
+  scratch_.clear();
+  emitter_->emit(leaf, scratch_);
+  leafRings_[static_cast<size_t>(leaf)] = emitter_->lastRingIds();
+  for (const auto& corners : scratch_) {
+    uint32_t s;
+    if (!freeSlots_.empty()) {
+      s = freeSlots_.back();
+      freeSlots_.pop_back();
+      ++slots_[s].generation;
+    } else {
+      s = static_cast<uint32_t>(slots_.size());
+      slots_.emplace_back();
+    }
+    Slot& slot = slots_[s];
+    slot.corners = corners;
+    slot.leaf = leaf;
+    slot.alive = true;
+    leafSlots_[static_cast<size_t>(leaf)].push_back(s);
+    delta.added.push_back({s, slot.generation});
+  }
+}
+
+void AdaptiveMesh::removeLeafElements(int32_t leaf, MeshDelta& delta) {
+  if (static_cast<size_t>(leaf) >= leafSlots_.size()) return;
+  for (uint32_t s : leafSlots_[static_cast<size_t>(leaf)]) {
+    slots_[s].alive = false;
+    delta.removed.push_back({s, slots_[s].generation});
+    freeSlots_.push_back(s);
+  }
+  leafSlots_[static_cast<size_t>(leaf)].clear();
+  leafRings_[static_cast<size_t>(leaf)].clear();
+}
+
+MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex) {
+  Quadtree& tree = built_.tree;
+  MeshDelta delta;
+  // Leaves that are gone lose their elements; the quadrants that are leaves now are new.
+  std::vector<int32_t> fresh;
+  for (const Quadtree::Change& change : tree.changes) {
+    if (change.isMerge()) {
+      for (int32_t c = change.before.firstChild; c < change.before.firstChild + 4; ++c) removeLeafElements(c, delta);
+    } else {
+      removeLeafElements(change.quadrant, delta);
+    }
+    if (inTree(tree, change.quadrant)) leavesBelow(tree, change.quadrant, fresh);
+  }
+  tree.changes.clear();
+  std::sort(fresh.begin(), fresh.end());
+  fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
+  fresh.erase(std::remove_if(fresh.begin(), fresh.end(), [&](int32_t q) { return !tree[q].isLeaf(); }), fresh.end());
+  for (int32_t q : fresh) emitLeaf(q, delta);
+
+  // Neighbours whose border gained or lost a T-vertex are emitted again; the rest keep theirs.
+  std::vector<int32_t> across;
+  for (int32_t q : fresh)
+    for (Side side : kSides) {
+      across.clear();
+      tree.neighbors(q, side, across);
+      for (int32_t n : across) {
+        if (std::binary_search(fresh.begin(), fresh.end(), n)) continue;
+        if (emitter_->ringIds(n) == leafRings_[static_cast<size_t>(n)]) continue;
+        removeLeafElements(n, delta);
+        emitLeaf(n, delta);
+      }
+    }
+  delta.firstNewVertex = firstNewVertex;
+  delta.vertexCount = static_cast<uint32_t>(vertices().size());
+  return delta;
+}
+
+MeshDelta AdaptiveMesh::refine(ElementId e) {
+  Quadtree& tree = built_.tree;
+  const int32_t q = slots_[e.slot].leaf;
+  const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
+  if (tree[q].level >= tree.maxDepth) return {};
+  // A split whose edges, or whose rebalancing, would need levels the tree does not have is
+  // taken back whole: the mesh stays as it was.
+  if (!tree.splitLeaf(q) || !balanceAround(tree, [&] {
+        std::vector<int32_t> seeds;
+        leavesBelow(tree, q, seeds);
+        return seeds;
+      }())) {
+    tree.undoChanges(0);
+    return {};
+  }
+  return applyChanges(firstNewVertex);
+}
+
+void AdaptiveMesh::mergeUnneededBalanceSplits(std::vector<int32_t> candidates) {
+  Quadtree& tree = built_.tree;
+  std::vector<int32_t> across;
+  while (!candidates.empty()) {
+    const int32_t c = candidates.back();
+    candidates.pop_back();
+    if (c < 0 || tree[c].isLeaf() || !tree[c].forced || !tree.canMerge(c)) continue;
+    tree.merge(c);
+    candidates.push_back(tree[c].parent);
+    for (Side side : kSides) {
+      across.clear();
+      tree.neighbors(c, side, across);
+      for (int32_t n : across) candidates.push_back(tree[n].parent);
+    }
+  }
+}
+
+MeshDelta AdaptiveMesh::coarsen(ElementId e) {
+  Quadtree& tree = built_.tree;
+  const int32_t parent = tree[slots_[e.slot].leaf].parent;
+  const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
+  if (parent < 0 || !tree.canMerge(parent)) return {};
+  tree.merge(parent);
+  // Quadrants split only to balance against the finer ones just merged may merge back too.
+  std::vector<int32_t> candidates{tree[parent].parent};
+  std::vector<int32_t> across;
+  for (Side side : kSides) {
+    across.clear();
+    tree.neighbors(parent, side, across);
+    for (int32_t n : across) candidates.push_back(tree[n].parent);
+  }
+  mergeUnneededBalanceSplits(std::move(candidates));
+  return applyChanges(firstNewVertex);
+}
+
+}  // namespace mesher

@@ -1,0 +1,81 @@
+// A mesh that changes locally (thesis 5.5): refine one element's quadrant, coarsen four sibling
+// quadrants back into one, each followed by local 2:1 rebalancing and re-emission of the
+// elements whose quadrants changed, reported as a delta. Untouched elements keep their ids.
+// What to refine or coarsen is decided outside (by the solver's gradients, or a test).
+#pragma once
+
+#include "mesher/balance.h"
+#include "mesher/leaf_emitter.h"
+#include "mesher/mesher.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace mesher {
+
+// A handle that stays valid while its element lives; a slot reused later has a new generation.
+struct ElementId {
+  uint32_t slot = 0;
+  uint32_t generation = 0;
+  bool operator==(const ElementId&) const = default;
+};
+
+struct MeshDelta {
+  std::vector<ElementId> removed;
+  std::vector<ElementId> added;
+  uint32_t firstNewVertex = 0, vertexCount = 0;  // vertices [firstNewVertex, vertexCount) are new
+
+  bool empty() const { return removed.empty() && added.empty(); }
+};
+
+class AdaptiveMesh {
+ public:
+  // Meshes the polygon as meshPolygon() does. Throws std::invalid_argument as it does.
+  AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings);
+  ~AdaptiveMesh();
+  AdaptiveMesh(const AdaptiveMesh&) = delete;
+  AdaptiveMesh& operator=(const AdaptiveMesh&) = delete;
+
+  const std::vector<Vec2>& vertices() const;
+  std::vector<ElementId> elements() const;  // the live ones, in slot order
+  bool alive(ElementId e) const;
+  // Corner vertex ids, counter-clockwise; [3] == Mesh::kNone for triangles. e must be alive.
+  const std::array<uint32_t, 4>& corners(ElementId e) const;
+  // The tree level of e's quadrant (0 is the root): deeper is finer.
+  int level(ElementId e) const;
+  // The live elements as a plain mesh, in slot order.
+  Mesh snapshot() const;
+
+  // Splits e's quadrant into four (nothing at the tree's deepest level), rebalances around it
+  // and re-emits what changed. e must be alive.
+  MeshDelta refine(ElementId e);
+  // Merges e's quadrant with its three siblings when all are leaves, the merged quadrant keeps
+  // the storage rules and 2:1 balance allows it; then merges quadrants nearby that were split
+  // only for balance and no longer need to be. Otherwise nothing. e must be alive.
+  MeshDelta coarsen(ElementId e);
+
+ private:
+  struct Slot {
+    std::array<uint32_t, 4> corners{};
+    int32_t leaf = -1;
+    uint32_t generation = 0;
+    bool alive = false;
+  };
+
+  MeshDelta applyChanges(uint32_t firstNewVertex);
+  void removeLeafElements(int32_t leaf, MeshDelta& delta);
+  void emitLeaf(int32_t leaf, MeshDelta& delta);
+  void mergeUnneededBalanceSplits(std::vector<int32_t> candidates);
+
+  PolygonTree built_;
+  std::unique_ptr<LeafEmitter> emitter_;
+  std::vector<Slot> slots_;
+  std::vector<uint32_t> freeSlots_;
+  std::vector<std::vector<uint32_t>> leafSlots_;    // per quadrant: its elements' slots
+  std::vector<std::vector<uint32_t>> leafRings_;    // per quadrant: the ring ids it was emitted with
+  std::vector<std::array<uint32_t, 4>> scratch_;
+};
+
+}  // namespace mesher

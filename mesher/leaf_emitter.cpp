@@ -1,0 +1,133 @@
+#include "mesher/leaf_emitter.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+namespace mesher {
+
+// Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
+// alike (corners are integers, crossings come from the edge and the line alone). Open addressing
+// over ids only, the points themselves kept in id order. Slots follow the Morton (Z) order of
+// the point in the root square, the order the leaves are visited in, so lookups of a million
+// points stay in cache instead of jumping across the table.
+class PointIds {
+ public:
+  PointIds(size_t expected, double rootSize) : toUnit_(1 / rootSize) {
+    slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
+    shift_ = 64 - std::countr_zero(slots_.size());
+    points_.reserve(expected);
+  }
+
+  // The id of p, adding it with the next id when it is new (`added` says which).
+  uint32_t findOrAdd(Vec2 p, bool& added) {
+    if (2 * (points_.size() + 1) > slots_.size()) grow();
+    size_t slot = slotOf(p);
+    while (slots_[slot] != kEmpty) {
+      if (points_[slots_[slot]] == p) {
+        added = false;
+        return slots_[slot];
+      }
+      slot = (slot + 1) & (slots_.size() - 1);
+    }
+    const auto id = static_cast<uint32_t>(points_.size());
+    slots_[slot] = id;
+    points_.push_back(p);
+    added = true;
+    return id;
+  }
+
+ private:
+  static constexpr uint32_t kEmpty = 0xffffffffu;
+
+  static uint64_t spreadBits(uint64_t v) {  // 32 bits to the even bits of 64
+    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
+    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
+    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
+    v = (v | (v << 2)) & 0x3333333333333333ull;
+    return (v | (v << 1)) & 0x5555555555555555ull;
+  }
+  size_t slotOf(Vec2 p) const {
+    const auto x = static_cast<uint64_t>(std::clamp(p.x * toUnit_, 0.0, 1.0) * 4294967295.0);
+    const auto y = static_cast<uint64_t>(std::clamp(p.y * toUnit_, 0.0, 1.0) * 4294967295.0);
+    return static_cast<size_t>((spreadBits(x) | spreadBits(y) << 1) >> shift_);
+  }
+  void grow() {
+    slots_.assign(slots_.size() * 2, kEmpty);
+    shift_ -= 1;
+    for (uint32_t id = 0; id < points_.size(); ++id) {
+      size_t slot = slotOf(points_[id]);
+      while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
+      slots_[slot] = id;
+    }
+  }
+
+  double toUnit_;
+  int shift_ = 0;
+  std::vector<uint32_t> slots_;
+  std::vector<Vec2> points_;  // tree coordinates, by id
+};
+
+LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
+    : built_(built),
+      ids_(std::make_unique<PointIds>(expectedLeaves + built.tree.input.vertices.size(), std::exp2(built.tree.maxDepth))),
+      regions_(built.tree) {
+  vertices_ = polygon.outer;
+  for (const Ring2& hole : polygon.holes) vertices_.insert(vertices_.end(), hole.begin(), hole.end());
+  vertices_.reserve(expectedLeaves * 2);
+  // Input vertices take ids 0..n-1, as in the vertex list (two at one tree point cannot occur:
+  // the tree would have refused them).
+  bool added;
+  for (const Vec2& v : built.tree.input.vertices) ids_->findOrAdd(v, added);
+}
+
+LeafEmitter::~LeafEmitter() = default;
+
+const LeafRegion& LeafEmitter::region(int32_t q) {
+  const LeafRegion& region = regions_.build(q);
+  ring_.clear();
+  ringIds_.clear();
+  bool added;
+  for (const RegionPoint& p : region.ring) {
+    uint32_t id;
+    if (p.inputVertex >= 0) {
+      id = static_cast<uint32_t>(p.inputVertex);
+    } else {
+      id = ids_->findOrAdd(p.at, added);
+      if (added) vertices_.push_back(built_.frame.toPlane(p.at));
+    }
+    ringIds_.push_back(id);
+    ring_.push_back(vertices_[id]);
+  }
+  return region;
+}
+
+const std::vector<uint32_t>& LeafEmitter::ringIds(int32_t q) {
+  region(q);
+  return ringIds_;
+}
+
+void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
+  const LeafRegion& leaf = region(q);
+  if (leaf.ring.empty()) return;
+  const std::vector<RingElement>* elements = &pieces_;
+  if (leaf.templateKey >= 0) {
+    const auto key = static_cast<size_t>(leaf.templateKey);
+    if (!haveTemplate_[key]) {
+      removeSubdomains(ring_, -1, templates_[key]);
+      haveTemplate_[key] = true;
+    }
+    elements = &templates_[key];
+  } else {
+    pieces_.clear();
+    removeSubdomains(ring_, leaf.hinge, pieces_);
+  }
+  for (const RingElement& piece : *elements) {
+    std::array<uint32_t, 4> element{0xffffffffu, 0xffffffffu, 0xffffffffu, 0xffffffffu};
+    for (uint8_t k = 0; k < piece.count; ++k) element[k] = ringIds_[piece.v[k]];
+    out.push_back(element);
+  }
+}
+
+}  // namespace mesher

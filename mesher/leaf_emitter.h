@@ -1,0 +1,53 @@
+// Leaf-by-leaf element emission (thesis 5.3 and 5.4) over a balanced tree: each leaf's region
+// becomes convex quads and triangles whose corners are shared mesh vertex ids. Used for a whole
+// mesh at once and again for the leaves a local refine or coarsen touches.
+#pragma once
+
+#include "mesher/leaf_region.h"
+#include "mesher/quadtree.h"
+#include "mesher/subdomain_removal.h"
+#include "mesher/triangulate.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace mesher {
+
+class PointIds;
+
+class LeafEmitter {
+ public:
+  // `built` must outlive the emitter; its frame must not change. Vertices start as the
+  // polygon's own points (outer ring, then holes), exact.
+  LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves);
+  ~LeafEmitter();
+
+  // Appends leaf q's elements to `out` (corner ids, counter-clockwise, [3] = 0xffffffff for
+  // triangles) and any new vertex to vertices(). Outside leaves add nothing.
+  void emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out);
+  // The vertex ids around leaf q's region, as emit() would use them: equal rings give equal
+  // elements. lastRingIds() is the ring of the last emit() or ringIds() call.
+  const std::vector<uint32_t>& ringIds(int32_t q);
+  const std::vector<uint32_t>& lastRingIds() const { return ringIds_; }
+
+  const std::vector<Vec2>& vertices() const { return vertices_; }
+  std::vector<Vec2> takeVertices() { return std::move(vertices_); }
+
+ private:
+  const LeafRegion& region(int32_t q);
+
+  const PolygonTree& built_;
+  std::unique_ptr<PointIds> ids_;
+  std::vector<Vec2> vertices_;
+  LeafRegionBuilder regions_;
+  std::vector<Vec2> ring_;
+  std::vector<uint32_t> ringIds_;
+  std::vector<RingElement> pieces_;
+  // Interior squares differ only in which sides carry a T-vertex: their subdomains (the
+  // templates of 5.3) are worked out once per pattern.
+  std::array<std::vector<RingElement>, 16> templates_;
+  std::array<bool, 16> haveTemplate_{};
+};
+
+}  // namespace mesher

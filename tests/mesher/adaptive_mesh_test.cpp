@@ -1,0 +1,167 @@
+// Local refine and coarsen (thesis 5.5): conforming after every step, local, reversible.
+#include "mesher/adaptive_mesh.h"
+
+#include "mesher/mesh_check.h"
+#include "tests/mesher/random_polygons.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <set>
+
+namespace mesher {
+namespace {
+
+const PolygonWithHoles kWall{{{0, 0}, {240, 0}, {240, 96}, {0, 96}}, {{{30, 40}, {30, 80}, {66, 80}, {66, 40}}}};
+
+void expectConforming(const PolygonWithHoles& polygon, const AdaptiveMesh& mesh) {
+  const MeshCheck c = checkMesh(polygon, mesh.snapshot());
+  EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
+  EXPECT_EQ(c.notCounterClockwiseOrConvex, 0u);
+  EXPECT_EQ(c.movedInputVertices, 0u);
+  EXPECT_EQ(c.tVertices, 0u);
+  EXPECT_EQ(c.unmatchedInnerEdges, 0u);
+  EXPECT_EQ(c.repeatedEdges, 0u);
+}
+
+// The mesh as a set of elements by corner positions, so meshes compare whatever their ids.
+std::set<std::vector<double>> shape(const AdaptiveMesh& mesh) {
+  std::set<std::vector<double>> out;
+  for (ElementId e : mesh.elements()) {
+    std::vector<double> corners;
+    for (uint32_t v : mesh.corners(e))
+      if (v != Mesh::kNone) corners.insert(corners.end(), {mesh.vertices()[v].x, mesh.vertices()[v].y});
+    out.insert(corners);
+  }
+  return out;
+}
+
+ElementId elementNear(const AdaptiveMesh& mesh, Vec2 p) {
+  ElementId best;
+  double bestDistance = 1e300;
+  for (ElementId e : mesh.elements()) {
+    Vec2 center{0};
+    int n = 0;
+    for (uint32_t v : mesh.corners(e))
+      if (v != Mesh::kNone) center += mesh.vertices()[v], ++n;
+    const double d = glm::length(center / static_cast<double>(n) - p);
+    if (d < bestDistance) bestDistance = d, best = e;
+  }
+  return best;
+}
+
+TEST(AdaptiveMesh, StartsAsTheWholeMesh) {
+  const AdaptiveMesh mesh(kWall, {12});
+  const Mesh whole = meshPolygon(kWall, {12});
+  EXPECT_EQ(mesh.elements().size(), whole.elements.size());
+  EXPECT_EQ(mesh.vertices(), whole.vertices);
+  expectConforming(kWall, mesh);
+}
+
+TEST(AdaptiveMesh, RefineIsLocalConformingAndReportsItsDelta) {
+  AdaptiveMesh mesh(kWall, {12});
+  const std::vector<ElementId> before = mesh.elements();
+  const ElementId target = elementNear(mesh, {150, 50});
+  const int level = mesh.level(target);
+  const uint32_t vertexCount = static_cast<uint32_t>(mesh.vertices().size());
+  const MeshDelta delta = mesh.refine(target);
+  ASSERT_FALSE(delta.empty());
+  EXPECT_NE(std::find(delta.removed.begin(), delta.removed.end(), target), delta.removed.end());
+  EXPECT_FALSE(mesh.alive(target));
+  for (ElementId e : delta.added) EXPECT_TRUE(mesh.alive(e));
+  EXPECT_EQ(delta.firstNewVertex, vertexCount);
+  EXPECT_GT(delta.vertexCount, vertexCount);
+  // Local: a handful of elements change; every other element keeps its id.
+  EXPECT_LT(delta.removed.size(), 12u);
+  size_t kept = 0;
+  for (ElementId e : before) kept += mesh.alive(e);
+  EXPECT_EQ(kept, before.size() - delta.removed.size());
+  EXPECT_EQ(mesh.elements().size(), before.size() - delta.removed.size() + delta.added.size());
+  EXPECT_EQ(mesh.level(elementNear(mesh, {150, 50})), level + 1);
+  expectConforming(kWall, mesh);
+}
+
+TEST(AdaptiveMesh, RefiningTwiceBalancesTheNeighbours) {
+  AdaptiveMesh mesh(kWall, {12});
+  for (int i = 0; i < 4; ++i) mesh.refine(elementNear(mesh, {151, 51}));
+  EXPECT_EQ(mesh.level(elementNear(mesh, {151, 51})), mesh.level(elementNear(mesh, {10, 10})) + 4);
+  expectConforming(kWall, mesh);
+}
+
+TEST(AdaptiveMesh, RefineThenCoarsenRestoresTheMesh) {
+  AdaptiveMesh mesh(kWall, {12});
+  const auto original = shape(mesh);
+  std::vector<ElementId> refined;
+  for (int i = 0; i < 3; ++i) mesh.refine(elementNear(mesh, {151, 51}));
+  EXPECT_NE(shape(mesh), original);
+  for (int i = 0; i < 3; ++i) EXPECT_FALSE(mesh.coarsen(elementNear(mesh, {151, 51})).empty()) << i;
+  EXPECT_EQ(shape(mesh), original);
+  expectConforming(kWall, mesh);
+}
+
+// Neighbouring elements (sharing an edge) come from quadrants at most one level apart.
+int largestLevelJump(const AdaptiveMesh& mesh) {
+  std::map<std::pair<uint32_t, uint32_t>, int> levelOfEdge;
+  for (ElementId e : mesh.elements()) {
+    const auto& c = mesh.corners(e);
+    const size_t n = c[3] == Mesh::kNone ? 3 : 4;
+    for (size_t k = 0; k < n; ++k) levelOfEdge[{c[k], c[(k + 1) % n]}] = mesh.level(e);
+  }
+  int jump = 0;
+  for (const auto& [edge, level] : levelOfEdge) {
+    const auto twin = levelOfEdge.find({edge.second, edge.first});
+    if (twin != levelOfEdge.end()) jump = std::max(jump, std::abs(twin->second - level));
+  }
+  return jump;
+}
+
+TEST(AdaptiveMesh, CoarseningNeverBreaksBalance) {
+  AdaptiveMesh mesh(kWall, {12});
+  for (int i = 0; i < 3; ++i) mesh.refine(elementNear(mesh, {151, 51}));
+  ASSERT_LE(largestLevelJump(mesh), 1);
+  size_t refused = 0;
+  for (double dx = -20; dx <= 20; dx += 2.5) {
+    const ElementId e = elementNear(mesh, {151 + dx, 51});
+    const auto before = shape(mesh);
+    if (mesh.coarsen(e).empty()) {
+      ++refused;
+      EXPECT_EQ(shape(mesh), before);
+    }
+    EXPECT_LE(largestLevelJump(mesh), 1) << dx;
+  }
+  EXPECT_GT(refused, 0u);  // some were refused for balance or because a sibling is split
+  expectConforming(kWall, mesh);
+}
+
+// Merging four quadrants that each hold a vertex would break the one-vertex rule of 5.2.
+TEST(AdaptiveMesh, QuadrantsHoldingDifferentVerticesDoNotMerge) {
+  const PolygonWithHoles square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}};
+  AdaptiveMesh mesh(square, {2});
+  ASSERT_EQ(mesh.elements().size(), 4u);  // one quadrant per corner vertex
+  for (ElementId e : mesh.elements()) EXPECT_TRUE(mesh.coarsen(e).empty());
+}
+
+// Random refines and coarsens anywhere, boundary leaves included: the mesh stays conforming and
+// exact after every step.
+TEST(AdaptiveMesh, RandomEditsKeepTheMeshConforming) {
+  std::mt19937 random(99);
+  for (int trial = 0; trial < 12; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const PolygonWithHoles polygon = test::randomPolygonWithHoles(random, trial + 5);
+    AdaptiveMesh mesh(polygon, {20});
+    for (int step = 0; step < 40; ++step) {
+      const std::vector<ElementId> live = mesh.elements();
+      const ElementId e = live[std::uniform_int_distribution<size_t>(0, live.size() - 1)(random)];
+      if (step % 3 == 2) mesh.coarsen(e);
+      else mesh.refine(e);
+    }
+    expectConforming(polygon, mesh);
+    EXPECT_LE(largestLevelJump(mesh), 1);
+  }
+}
+
+}  // namespace
+}  // namespace mesher
