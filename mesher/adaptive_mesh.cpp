@@ -141,16 +141,15 @@ MeshDelta AdaptiveMesh::refine(ElementId e) {
   const int32_t q = slots_[e.slot].leaf;
   const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
   if (tree[q].level >= tree.maxDepth) return {};
-  // A split whose edges, or whose rebalancing, would need levels the tree does not have is
-  // taken back whole: the mesh stays as it was.
-  if (!tree.splitLeaf(q) || !balanceAround(tree, [&] {
-        std::vector<int32_t> seeds;
-        leavesBelow(tree, q, seeds);
-        return seeds;
-      }())) {
+  // A split whose edges would need levels the tree does not have is taken back: the mesh stays
+  // as it was.
+  if (!tree.splitLeaf(q)) {
     tree.undoChanges(0);
     return {};
   }
+  std::vector<int32_t> seeds;
+  leavesBelow(tree, q, seeds);
+  balanceAround(tree, std::move(seeds));
   return applyChanges(firstNewVertex);
 }
 

@@ -1,7 +1,5 @@
 #include "mesher/balance.h"
 
-#include <stdexcept>
-
 namespace mesher {
 
 namespace {
@@ -17,7 +15,7 @@ void pushLeavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out)
 
 }  // namespace
 
-std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
+size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
   size_t splits = 0;
   std::vector<int32_t> across;
   while (!seeds.empty()) {
@@ -31,7 +29,11 @@ std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds) 
       for (int32_t n : across) {
         const Quadrant& neighbor = tree[n];
         if (neighbor.status == QuadStatus::Outside || neighbor.level >= tree[q].level - 1) continue;
-        if (!tree.splitLeaf(n)) return std::nullopt;
+        const size_t mark = tree.changes.size();
+        if (!tree.splitLeaf(n)) {
+          tree.undoChanges(mark);
+          continue;
+        }
         tree.quadrants[static_cast<size_t>(n)].forced = true;
         pushLeavesBelow(tree, n, seeds);
         seeds.push_back(q);  // its neighbour there may still be too coarse
@@ -42,14 +44,11 @@ std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds) 
   return splits;
 }
 
-std::optional<size_t> balance(Quadtree& tree) { return balanceAround(tree, tree.leaves()); }
+size_t balance(Quadtree& tree) { return balanceAround(tree, tree.leaves()); }
 
 PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize) {
   PolygonTree built = buildPolygonTree(polygon, patchSize);
-  for (int deeper = 8; !balance(built.tree); deeper += 8) {
-    if (built.tree.maxDepth >= kDeepestTree) throw std::invalid_argument("polygon corner too sharp to balance");
-    built = buildPolygonTree(polygon, patchSize, deeper);
-  }
+  balance(built.tree);
   built.tree.changes.clear();
   return built;
 }

@@ -4,24 +4,23 @@
 
 #include "mesher/quadtree.h"
 
-#include <optional>
 #include <vector>
 
 namespace mesher {
 
 // Splits coarse leaves until the tree is balanced around `seeds` (their neighbourhoods ripple
-// as far as splitting forces). Work is proportional to the leaves split. Returns how many were,
-// or nothing when a split leaf's edges would need a level deeper than maxDepth (a sharp corner
-// whose leaf had held it whole): the tree is then unusable and must be rebuilt deeper.
+// as far as splitting forces). Work is proportional to the leaves split. Returns how many were.
+// A leaf whose split would need levels the tree does not have (it holds a sharp corner whose
+// edges run on close together, with the vertex just outside a child) stays whole: the tree is
+// then unbalanced there, which leaf regions handle (all T-vertices on a side are anchored).
 // The tree must be complete. Outside leaves take no part.
-std::optional<size_t> balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
+size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
 
 // Balances the whole tree.
-std::optional<size_t> balance(Quadtree& tree);
+size_t balance(Quadtree& tree);
 
-// A polygon's balanced tree (buildPolygonTree, then balance), built deeper when balancing splits
-// a leaf that held a sharp corner whole and its edges then need more levels than the tree has.
-// Throws std::invalid_argument as buildPolygonTree does.
+// A polygon's balanced tree: buildPolygonTree, then balance. Throws std::invalid_argument as
+// buildPolygonTree does.
 PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize);
 
 }  // namespace mesher

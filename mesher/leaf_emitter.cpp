@@ -98,7 +98,9 @@ const LeafRegion& LeafEmitter::region(int32_t q) {
       if (added) vertices_.push_back(built_.frame.toPlane(p.at));
     }
     ringIds_.push_back(id);
-    ring_.push_back(vertices_[id]);
+    // Shapes are judged in tree coordinates, where points on one grid line are exactly in line;
+    // plane coordinates far from the origin would blur a straight corner into a convex one.
+    ring_.push_back(p.at);
   }
   return region;
 }

@@ -41,7 +41,7 @@ class LeafEmitter {
   std::unique_ptr<PointIds> ids_;
   std::vector<Vec2> vertices_;
   LeafRegionBuilder regions_;
-  std::vector<Vec2> ring_;
+  std::vector<Vec2> ring_;  // tree coordinates
   std::vector<uint32_t> ringIds_;
   std::vector<RingElement> pieces_;
   // Interior squares differ only in which sides carry a T-vertex: their subdomains (the

@@ -88,9 +88,10 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
   for (const auto& e : mesh.elements) {
     const size_t n = e[3] == Mesh::kNone ? 3 : 4;
     double area = 0, diameter = 0;
+    const Vec2 origin = mesh.vertices[e[0]];  // areas relative to a corner keep far meshes precise
     for (size_t k = 0; k < n; ++k) {
       const Vec2 a = mesh.vertices[e[k]], b = mesh.vertices[e[(k + 1) % n]], c = mesh.vertices[e[(k + 2) % n]];
-      area += 0.5 * cross(a, b);
+      area += 0.5 * cross(a - origin, b - origin);
       if (!(cross(b - a, c - b) > 0)) ++check.notCounterClockwiseOrConvex;
       const Vec2 u = a - b, v = c - b;
       check.smallestAngleDeg = std::min(check.smallestAngleDeg, std::atan2(std::abs(cross(u, v)), glm::dot(u, v)) * 180 / std::numbers::pi);

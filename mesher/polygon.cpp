@@ -35,10 +35,13 @@ bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 }  // namespace
 
 double signedArea(const Ring2& ring) {
+  // Relative to the first point, so rings far from the origin keep their precision.
   double twice = 0;
   const size_t n = ring.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[i], b = ring[(i + 1) % n];
+  if (n == 0) return 0;
+  const Vec2 o = ring.front();
+  for (size_t i = 1; i + 1 < n; ++i) {
+    const Vec2 a = ring[i] - o, b = ring[i + 1] - o;
     twice += a.x * b.y - b.x * a.y;
   }
   return 0.5 * twice;

@@ -31,7 +31,7 @@ TEST(Balance, NeighboursDifferByAtMostOneLevel) {
     SCOPED_TRACE("trial " + std::to_string(trial));
     PolygonTree built = buildPolygonTree(test::randomPolygonWithHoles(random, trial), 4 + trial % 30);
     unbalancedBefore += levelGap(built.tree) > 1;
-    ASSERT_TRUE(balance(built.tree));
+    balance(built.tree);
     EXPECT_LE(levelGap(built.tree), 1);
   }
   EXPECT_GT(unbalancedBefore, 20);  // the random polygons do exercise balancing
@@ -47,9 +47,7 @@ TEST(Balance, ADeepLeafRipplesOutward) {
     q = built.tree[q].firstChild + 3;  // the north-east child, toward the neighbours
   }
   EXPECT_GT(levelGap(built.tree), 1);
-  const std::optional<size_t> splits = balanceAround(built.tree, {q});
-  ASSERT_TRUE(splits);
-  EXPECT_GT(*splits, 0u);
+  EXPECT_GT(balanceAround(built.tree, {q}), 0u);
   EXPECT_LE(levelGap(built.tree), 1);
   for (int32_t leaf : built.tree.leaves()) EXPECT_EQ(built.tree[leaf].status, QuadStatus::Inside);
 }

@@ -45,7 +45,7 @@ TEST(Mesher, ConcavePolygonWithAHole) {
 
 TEST(Mesher, RandomPolygonsWithHoles) {
   std::mt19937 random(77);
-  for (int trial = 0; trial < 200; ++trial) {
+  for (int trial = 0; trial < 1000; ++trial) {
     SCOPED_TRACE("trial " + std::to_string(trial));
     const PolygonWithHoles polygon = test::randomPolygonWithHoles(random, trial);
     expectGoodMesh(polygon, 5 + trial % 40);
@@ -59,6 +59,15 @@ Ring2 regularPolygon(Vec2 center, double radius, int sides, double turnDeg) {
     ring.push_back(center + radius * Vec2{std::cos(a), std::sin(a)});
   }
   return ring;
+}
+
+TEST(Mesher, RandomConcavePolygons) {
+  std::mt19937 random(78);
+  for (int trial = 0; trial < 1000; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const PolygonWithHoles polygon = test::randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10);
+    expectGoodMesh(polygon, 2 + trial % 30);
+  }
 }
 
 // Turned inputs put vertices a rounding error off grid lines and edges a hair past corners.

@@ -43,4 +43,31 @@ PolygonWithHoles randomPolygonWithHoles(std::mt19937& random, int trial, double 
   return p;
 }
 
+PolygonWithHoles randomStarPolygon(std::mt19937& random, int trial, double offset) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  PolygonWithHoles p;
+  const int points = 6 + trial % 35;
+  const double radius = 1 + 100 * unit(random);
+  const Vec2 center{2 * offset * (unit(random) - 0.5), 2 * offset * (unit(random) - 0.5)};
+  for (int i = 0; i < points; ++i) {
+    const double a = 2 * std::numbers::pi * (i + 0.8 * unit(random)) / points;
+    p.outer.push_back(center + radius * (0.3 + 0.7 * unit(random)) * Vec2{std::cos(a), std::sin(a)});
+  }
+  // Angle gaps stay under 108 degrees, so the disk of 0.3 x 0.58 x radius is inside.
+  const double clear = 0.3 * 0.58 * radius;
+  const int holes = trial % 4;
+  for (int h = 0; h < holes; ++h) {
+    const double a = 2 * std::numbers::pi * h / std::max(holes, 1);
+    const Vec2 c = center + (holes > 1 ? 0.5 * clear : 0.0) * Vec2{std::cos(a), std::sin(a)};
+    Ring2 hole;
+    const int sides = 3 + static_cast<int>(unit(random) * 5);
+    for (int i = 0; i < sides; ++i) {
+      const double b = 2 * std::numbers::pi * (i + 0.5 * unit(random)) / sides;
+      hole.push_back(c + 0.2 * clear * Vec2{std::cos(b), std::sin(b)});
+    }
+    p.holes.push_back(hole);
+  }
+  return p;
+}
+
 }  // namespace mesher::test

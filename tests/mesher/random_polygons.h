@@ -12,4 +12,8 @@ namespace mesher::test {
 // winding alternates with `trial`.
 PolygonWithHoles randomPolygonWithHoles(std::mt19937& random, int trial, double offset = 500);
 
+// A concave, star-shaped outer ring of 6-40 points (radii from 30% to 100%), with up to three
+// small holes near its centre. `offset` moves it from the origin.
+PolygonWithHoles randomStarPolygon(std::mt19937& random, int trial, double offset = 500);
+
 }  // namespace mesher::test
