@@ -1,5 +1,6 @@
 #include "engine/scene_loader.h"
 
+#include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
 #include "engine/json_reader.h"
 #include "engine/solid_surfaces.h"
@@ -298,14 +299,15 @@ Scene parseScene(std::string_view text, const std::string& file) {
     for (const Solid& solid : scene.objects[i].solids)
       appendSolidSurfaces(scene, i, solid, scene.objects[i].patchSize, scene.surfaces);
   computeBounds(scene);
+  const Vec3 size = scene.boundsMax - scene.boundsMin;
+  const double extent = std::max({size.x, size.y, size.z});
   // Without settings.patch_size, an eighth of the scene's extent.
-  if (scene.patchSize <= 0) {
-    const Vec3 size = scene.boundsMax - scene.boundsMin;
-    scene.patchSize = std::max({size.x, size.y, size.z}) / 8;
-  }
+  if (scene.patchSize <= 0) scene.patchSize = extent / 8;
   for (Surface& s : scene.surfaces)
     if (s.patchSize <= 0) s.patchSize = scene.patchSize;
   checkPatchSizes(scene, in);
+  // Coplanar faces of one material that touch become one surface (3.2).
+  scene.surfaces = mergeCoplanarSurfaces(scene, std::move(scene.surfaces), 1e-9 * extent);
   return scene;
 }
 

@@ -38,14 +38,21 @@ PlaneFrame planeFrame(const Surface& s) {
 
 }  // namespace
 
+mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf) {
+  const PlaneFrame frame = planeFrame(frameOf);
+  mesher::PolygonWithHoles polygon;
+  for (const Vec3& p : surface.outer) polygon.outer.push_back(frame.project(p));
+  for (const Ring3& hole : surface.holes) {
+    mesher::Ring2& ring = polygon.holes.emplace_back();
+    for (const Vec3& p : hole) ring.push_back(frame.project(p));
+  }
+  return polygon;
+}
+
 SurfaceMesh meshSurface(const Surface& surface) {
   const PlaneFrame frame = planeFrame(surface);
   SurfaceMesh result;
-  for (const Vec3& p : surface.outer) result.polygon.outer.push_back(frame.project(p));
-  for (const Ring3& hole : surface.holes) {
-    mesher::Ring2& ring = result.polygon.holes.emplace_back();
-    for (const Vec3& p : hole) ring.push_back(frame.project(p));
-  }
+  result.polygon = planePolygon(surface, surface);
   result.mesh = mesher::meshPolygon(result.polygon, {surface.patchSize});
 
   // The surface's own points come first in the mesh, in the same order: keep them exact.

@@ -19,4 +19,8 @@ struct SurfaceMesh {
 // axis-aligned edges stay axis-aligned), else axes along its longest outer edge.
 SurfaceMesh meshSurface(const Surface& surface);
 
+// The surface's rings in the plane coordinates `frameOf` is meshed in (a surface in the same
+// plane), counter-clockwise about the front normal.
+mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf);
+
 }  // namespace engine
