@@ -21,6 +21,16 @@ double distanceToSegment(Vec2 p, Vec2 a, Vec2 b, double& t) {
   return glm::length(p - (a + std::clamp(t, 0.0, 1.0) * d));
 }
 
+// 2r/R of triangle abc: 1 for an equilateral triangle, 0 for a degenerate one.
+double aspectRatio(Vec2 a, Vec2 b, Vec2 c) {
+  const double x = glm::length(b - c), y = glm::length(c - a), z = glm::length(a - b);
+  const double twiceArea = std::abs(cross(b - a, c - a));
+  if (twiceArea == 0) return 0;
+  const double s = 0.5 * (x + y + z);
+  const double inscribed = 0.5 * twiceArea / s, circumscribed = x * y * z / (2 * twiceArea);
+  return 2 * inscribed / circumscribed;
+}
+
 uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t{a} << 32 | b; }
 
 // Undirected edges bucketed on a uniform grid, for "which edges pass near this point".
@@ -96,6 +106,7 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
       const Vec2 u = a - b, v = c - b;
       check.smallestAngleDeg = std::min(check.smallestAngleDeg, std::atan2(std::abs(cross(u, v)), glm::dot(u, v)) * 180 / std::numbers::pi);
       for (size_t j = 0; j < n; ++j) diameter = std::max(diameter, glm::length(mesh.vertices[e[j]] - a));
+      check.smallestAspectRatio = std::min(check.smallestAspectRatio, aspectRatio(a, b, c));
       if (++edgeUse[edgeKey(e[k], e[(k + 1) % n])] > 1) ++check.repeatedEdges;
     }
     check.elementArea += area;

@@ -16,6 +16,9 @@ struct MeshCheck {
   size_t repeatedEdges = 0;         // a directed edge used by two elements (overlap)
   double largestDiameter = 0;
   double smallestAngleDeg = 180;
+  // The thesis' shape measure, inscribed over circumscribed radius, scaled so an equilateral
+  // triangle has 1 (2r/R); a quad counts as its worst corner triangle (a square: 0.83).
+  double smallestAspectRatio = 1;
 };
 
 // Runs every check; about linear in the mesh's size (edges are bucketed on a grid).

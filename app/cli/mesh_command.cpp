@@ -24,7 +24,7 @@ using OrderedJson = nlohmann::ordered_json;
 // What one meshed polygon (a surface or the polygon case) adds to the report.
 struct Tally {
   size_t elements = 0, quads = 0, vertices = 0, tVertices = 0;
-  double smallestAngle = 180;
+  double smallestAngle = 180, smallestAspect = 1;
 
   void add(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh) {
     const mesher::MeshCheck check = mesher::checkMesh(polygon, mesh);
@@ -33,6 +33,7 @@ struct Tally {
     vertices += mesh.vertices.size();
     tVertices += check.tVertices;
     smallestAngle = std::min(smallestAngle, check.smallestAngleDeg);
+    smallestAspect = std::min(smallestAspect, check.smallestAspectRatio);
   }
 };
 
@@ -110,6 +111,7 @@ int runMesh(const MeshOptions& options) {
         {"elements", tally.elements},   {"quads", tally.quads},
         {"triangles", tally.elements - tally.quads}, {"vertices", tally.vertices},
         {"t_vertices", tally.tVertices}, {"min_angle_deg", tally.smallestAngle},
+        {"min_aspect_ratio", tally.smallestAspect},
         {"mesh_ms", meshMs},
     };
     writeFileAtomically(options.stats, stats.dump(2) + "\n");

@@ -93,6 +93,27 @@ TEST(Mesher, NearDegeneratePolygons) {
                  2);
 }
 
+TEST(MeshChecks, AspectRatioIsOneForEquilateralAndFallsForSlivers) {
+  const double h = std::sqrt(3.0) / 2;
+  const PolygonWithHoles equilateral{{{0, 0}, {1, 0}, {0.5, h}}, {}};
+  Mesh one;
+  one.vertices = equilateral.outer;
+  one.elements = {{0, 1, 2, Mesh::kNone}};
+  EXPECT_NEAR(checkMesh(equilateral, one).smallestAspectRatio, 1, 1e-12);
+  EXPECT_NEAR(checkMesh(equilateral, one).smallestAngleDeg, 60, 1e-9);
+  const PolygonWithHoles square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}};
+  Mesh quad;
+  quad.vertices = square.outer;
+  quad.elements = {{0, 1, 2, 3}};
+  // Its corner triangle is right isosceles: r = (2 - sqrt 2) / 2, R = sqrt 2 / 2.
+  EXPECT_NEAR(checkMesh(square, quad).smallestAspectRatio, 2 * std::sqrt(2.0) - 2, 1e-12);
+  const PolygonWithHoles sliver{{{0, 0}, {1, 0}, {0.5, 0.01}}, {}};
+  Mesh thin;
+  thin.vertices = sliver.outer;
+  thin.elements = {{0, 1, 2, Mesh::kNone}};
+  EXPECT_LT(checkMesh(sliver, thin).smallestAspectRatio, 0.05);
+}
+
 // The checks themselves catch broken meshes, so a passing mesh means something.
 TEST(MeshChecks, CatchBrokenMeshes) {
   const PolygonWithHoles square{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}};
