@@ -1,5 +1,7 @@
 #include "mesher/quadtree.h"
 
+#include "mesher/classify.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -13,17 +15,6 @@ namespace {
 
 bool inClosedSquare(Vec2 p, double x0, double y0, double x1, double y1) {
   return x0 <= p.x && p.x <= x1 && y0 <= p.y && p.y <= y1;
-}
-
-// Even-odd test against every input edge: only for leaves no edge passes through, so the
-// centre never lies on an edge.
-bool insidePolygon(const QuadtreeInput& input, Vec2 p) {
-  bool inside = false;
-  for (const auto& [i, j] : input.edges) {
-    const Vec2 a = input.vertices[i], b = input.vertices[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
-  }
-  return inside;
 }
 
 }  // namespace
@@ -376,11 +367,7 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
 
   // Classification: leaves holding edges are boundary (set as they were stored), the others
   // lie wholly on one side.
-  for (Quadrant& q : tree.quadrants) {
-    if (!q.isLeaf() || q.status != QuadStatus::Undefined) continue;
-    const double half = static_cast<double>(tree.edgeLength(q)) / 2;
-    q.status = insidePolygon(tree.input, {q.x + half, q.y + half}) ? QuadStatus::Inside : QuadStatus::Outside;
-  }
+  classifyLeaves(tree);
   tree.complete = true;
   return tree;
 }

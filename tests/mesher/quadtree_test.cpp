@@ -1,6 +1,8 @@
 // The tree setup and edge storage of thesis sections 5.1 and 5.2.
 #include "mesher/quadtree.h"
 
+#include "mesher/classify.h"
+
 #include "tests/mesher/random_polygons.h"
 
 #include <glm/geometric.hpp>
@@ -206,6 +208,35 @@ TEST(Quadtree, LeafAtFindsTheHalfOpenOwner) {
   EXPECT_EQ(corner.y, 0);
   const double s = static_cast<double>(tree.edgeLength(corner));
   EXPECT_EQ(tree.quadrants[static_cast<size_t>(tree.leafAt({s, 0}))].x, static_cast<int64_t>(s));
+}
+
+}  // namespace
+}  // namespace mesher
+
+namespace mesher {
+namespace {
+
+// The flood fill classifies every leaf without falling back on ray casting, and agrees with it.
+void expectFloodFillAlone(PolygonTree built) {
+  std::vector<QuadStatus> before;
+  for (Quadrant& q : built.tree.quadrants) {
+    before.push_back(q.status);
+    if (q.isLeaf() && q.status != QuadStatus::Boundary) q.status = QuadStatus::Undefined;
+  }
+  EXPECT_EQ(classifyLeaves(built.tree), 0u);
+  for (size_t i = 0; i < before.size(); ++i) EXPECT_EQ(built.tree.quadrants[i].status, before[i]) << i;
+}
+
+TEST(Classification, FloodFillReachesEveryLeaf) {
+  // A rectangle has no boundary leaf at all: its edges lie along leaf sides and seed the fill.
+  expectFloodFillAlone(buildPolygonTree({{{3, 2}, {35, 2}, {35, 14}, {3, 14}}, {}}, 4));
+  // An L whose reflex corner and edges lie on grid lines.
+  expectFloodFillAlone(buildPolygonTree({{{0, 0}, {8, 0}, {8, 4}, {4, 4}, {4, 8}, {0, 8}}, {}}, 1));
+  std::mt19937 random(13);
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    expectFloodFillAlone(buildPolygonTree(trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial), 3 + trial % 20));
+  }
 }
 
 }  // namespace

@@ -1,0 +1,17 @@
+// Inside/outside classification of the leaves that hold no edge (thesis 5.2): the inside lies to
+// the left of every directed edge, so a boundary leaf tells on which side its neighbours are, and
+// the answer spreads by flood fill.
+#pragma once
+
+#include "mesher/quadtree.h"
+
+namespace mesher {
+
+// Sets every Undefined leaf to Inside or Outside. Seeds: neighbours of boundary leaves, judged
+// from that leaf's own edges at a point of their shared side; leaves either side of an edge
+// lying exactly along leaf sides (no leaf stores such an edge), judged by its direction. The
+// fill does not cross those edges. A leaf the fill cannot reach is tested by ray casting.
+// Returns how many leaves needed the ray cast (0 for any polygon the rules describe).
+size_t classifyLeaves(Quadtree& tree);
+
+}  // namespace mesher
