@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace mesher {
 
@@ -10,32 +9,37 @@ namespace {
 
 constexpr Side kSides[] = {Side::West, Side::East, Side::South, Side::North};
 
-// Input edges lying on a vertical or horizontal grid line, where leaf sides lie.
-struct LineEdge {
-  double lo, hi;        // extent along the line
-  bool insideIsHigher;  // the polygon's inside is on the side of larger coordinate across the line
-};
-struct SideLyingEdges {
-  std::map<double, std::vector<LineEdge>> vertical, horizontal;  // by x, by y
-
-  explicit SideLyingEdges(const QuadtreeInput& in) {
+// Marks, for every leaf, the sides along which an input edge lies (no leaf stores such an edge:
+// it crosses no leaf's open square), and seeds the leaves either side of each such edge from its
+// direction: the inside is on its left.
+class SideLyingEdges {
+ public:
+  SideLyingEdges(const Quadtree& tree, std::vector<uint8_t>& blocked, std::vector<std::pair<int32_t, bool>>& seeds) {
+    const QuadtreeInput& in = tree.input;
     for (const auto& [i, j] : in.edges) {
       const Vec2 a = in.vertices[i], b = in.vertices[j];
-      if (a.x == b.x && a.x == std::round(a.x))  // inside is left of a->b: west when going up
-        vertical[a.x].push_back({std::min(a.y, b.y), std::max(a.y, b.y), b.y < a.y});
-      else if (a.y == b.y && a.y == std::round(a.y))  // inside north when going east
-        horizontal[a.y].push_back({std::min(a.x, b.x), std::max(a.x, b.x), b.x > a.x});
+      const bool vertical = a.x == b.x && a.x == std::round(a.x);
+      const bool horizontal = a.y == b.y && a.y == std::round(a.y);
+      if (!vertical && !horizontal) continue;
+      // Going up a vertical edge the inside is west; going east along a horizontal one, north.
+      const bool lowSideInside = vertical ? b.y > a.y : b.x < a.x;
+      const int axis = vertical ? 1 : 0;  // the coordinate that runs along the edge
+      const double lo = std::min(a[axis], b[axis]), hi = std::max(a[axis], b[axis]);
+      const double line = vertical ? a.x : a.y;
+      for (int lowSide = 0; lowSide < 2; ++lowSide) {
+        // Walk the leaves along this side of the edge.
+        for (double t = lo; t < hi;) {
+          const double across = lowSide ? line - 0.5 : line;  // leaves are at least 1 unit wide
+          const int32_t q = tree.leafAt(vertical ? Vec2{across, t} : Vec2{t, across});
+          if (q < 0) break;
+          const Quadrant& leaf = tree[q];
+          const Side facing = vertical ? (lowSide ? Side::East : Side::West) : (lowSide ? Side::North : Side::South);
+          blocked[static_cast<size_t>(q)] |= static_cast<uint8_t>(1u << static_cast<int>(facing));
+          seeds.push_back({q, (lowSide == 1) == lowSideInside});
+          t = static_cast<double>(vertical ? leaf.y : leaf.x) + static_cast<double>(tree.edgeLength(leaf));
+        }
+      }
     }
-  }
-
-  // The edge lying along [lo, hi] of the given line, if any.
-  const LineEdge* along(bool verticalLine, double line, double lo, double hi) const {
-    const auto& lines = verticalLine ? vertical : horizontal;
-    const auto found = lines.find(line);
-    if (found == lines.end()) return nullptr;
-    for (const LineEdge& e : found->second)
-      if (std::min(e.hi, hi) > std::max(e.lo, lo)) return &e;
-    return nullptr;
   }
 };
 
@@ -48,12 +52,11 @@ Shared sharedSide(const Quadtree& tree, int32_t q, int32_t n, Side side) {
   const Quadrant& a = tree[q];
   const Quadrant& b = tree[n];
   const double sa = static_cast<double>(tree.edgeLength(a)), sb = static_cast<double>(tree.edgeLength(b));
-  if (side == Side::West || side == Side::East) {
-    const double line = side == Side::West ? static_cast<double>(a.x) : a.x + sa;
-    return {true, line, std::max<double>(static_cast<double>(a.y), static_cast<double>(b.y)), std::min(a.y + sa, b.y + sb)};
-  }
-  const double line = side == Side::South ? static_cast<double>(a.y) : a.y + sa;
-  return {false, line, std::max<double>(static_cast<double>(a.x), static_cast<double>(b.x)), std::min(a.x + sa, b.x + sb)};
+  const double ax = static_cast<double>(a.x), ay = static_cast<double>(a.y);
+  const double bx = static_cast<double>(b.x), by = static_cast<double>(b.y);
+  if (side == Side::West || side == Side::East)
+    return {true, side == Side::West ? ax : ax + sa, std::max(ay, by), std::min(ay + sa, by + sb)};
+  return {false, side == Side::South ? ay : ay + sa, std::max(ax, bx), std::min(ax + sa, bx + sb)};
 }
 
 bool rayCastInside(const QuadtreeInput& input, Vec2 p) {
@@ -67,40 +70,48 @@ bool rayCastInside(const QuadtreeInput& input, Vec2 p) {
 
 }  // namespace
 
-size_t classifyLeaves(Quadtree& tree) {
-  const SideLyingEdges lying(tree.input);
-  std::vector<int32_t> fill;
-  std::vector<int32_t> across;
+size_t classifyLeaves(Quadtree& tree, size_t rayCastBelow) {
+  const std::vector<int32_t> leaves = tree.leaves();
+  auto rayCastTheRest = [&] {
+    size_t cast = 0;
+    for (int32_t q : leaves) {
+      if (tree[q].status != QuadStatus::Undefined) continue;
+      const Quadrant& leaf = tree[q];
+      const double half = static_cast<double>(tree.edgeLength(leaf)) / 2;
+      tree.quadrants[static_cast<size_t>(q)].status =
+          rayCastInside(tree.input, {leaf.x + half, leaf.y + half}) ? QuadStatus::Inside : QuadStatus::Outside;
+      ++cast;
+    }
+    return cast;
+  };
+  if (tree.input.edges.size() <= rayCastBelow) {
+    rayCastTheRest();
+    return 0;
+  }
+
+  std::vector<uint8_t> blocked(tree.quadrants.size(), 0);  // per leaf: sides an edge lies along
+  std::vector<std::pair<int32_t, bool>> seeds;
+  SideLyingEdges(tree, blocked, seeds);
+  std::vector<int32_t> fill, across;
   auto set = [&](int32_t n, bool inside) {
     if (tree[n].status != QuadStatus::Undefined) return;
     tree.quadrants[static_cast<size_t>(n)].status = inside ? QuadStatus::Inside : QuadStatus::Outside;
     fill.push_back(n);
   };
-  // Which side of a side-lying edge leaf q is on: across `side` of q lies the edge.
-  auto insideBeside = [](const LineEdge& e, Side side) {
-    const bool edgeIsHigher = side == Side::East || side == Side::North;
-    return e.insideIsHigher != edgeIsHigher;
-  };
+  auto isBlocked = [&](int32_t q, Side side) { return (blocked[static_cast<size_t>(q)] >> static_cast<int>(side)) & 1; };
+  for (const auto& [q, inside] : seeds) set(q, inside);
 
-  // Seeds from boundary leaves and from edges lying along leaf sides.
-  const std::vector<int32_t> leaves = tree.leaves();
+  // Seeds from boundary leaves: each judges its edge-free neighbours with its own edges, at the
+  // point of the shared side farthest from their lines.
   for (int32_t q : leaves) {
-    const bool boundary = tree[q].status == QuadStatus::Boundary;
+    if (tree[q].status != QuadStatus::Boundary) continue;
     for (Side side : kSides) {
+      if (isBlocked(q, side)) continue;
       across.clear();
       tree.neighbors(q, side, across);
       for (int32_t n : across) {
         if (tree[n].status != QuadStatus::Undefined) continue;
         const Shared shared = sharedSide(tree, q, n, side);
-        if (const LineEdge* e = lying.along(shared.vertical, shared.line, shared.lo, shared.hi)) {
-          // The neighbour is across the edge from q: on the other side of it.
-          const Side back = side == Side::West ? Side::East : side == Side::East ? Side::West
-                            : side == Side::South ? Side::North : Side::South;
-          set(n, insideBeside(*e, back));
-          continue;
-        }
-        if (!boundary) continue;
-        // Judge at the point of the shared side farthest from the leaf's edges' lines.
         Vec2 best{0};
         double bestClearance = -1;
         for (double t : {0.25, 0.5, 0.75}) {
@@ -120,34 +131,23 @@ size_t classifyLeaves(Quadtree& tree) {
     }
   }
 
-  // Flood fill through leaves without edges, stopped by side-lying edges.
+  // Flood fill through leaves without edges, stopped where an edge lies along a side.
   while (!fill.empty()) {
     const int32_t q = fill.back();
     fill.pop_back();
     const bool inside = tree[q].status == QuadStatus::Inside;
     for (Side side : kSides) {
+      if (isBlocked(q, side)) continue;
       across.clear();
       tree.neighbors(q, side, across);
-      for (int32_t n : across) {
-        if (tree[n].status != QuadStatus::Undefined) continue;
-        const Shared shared = sharedSide(tree, q, n, side);
-        if (lying.along(shared.vertical, shared.line, shared.lo, shared.hi)) continue;
-        set(n, inside);
-      }
+      for (int32_t n : across)
+        if (tree[n].status == QuadStatus::Undefined) set(n, inside);
     }
   }
 
-  // Whatever the fill did not reach (no boundary anywhere near it) is tested directly.
-  size_t cast = 0;
-  for (int32_t q : leaves) {
-    if (tree[q].status != QuadStatus::Undefined) continue;
-    const Quadrant& leaf = tree[q];
-    const double half = static_cast<double>(tree.edgeLength(leaf)) / 2;
-    tree.quadrants[static_cast<size_t>(q)].status =
-        rayCastInside(tree.input, {leaf.x + half, leaf.y + half}) ? QuadStatus::Inside : QuadStatus::Outside;
-    ++cast;
-  }
-  return cast;
+  // Whatever the fill did not reach is tested directly (a side only partly along an edge is
+  // blocked whole, which can leave a leaf unreached).
+  return rayCastTheRest();
 }
 
 }  // namespace mesher

@@ -12,6 +12,10 @@ namespace mesher {
 // lying exactly along leaf sides (no leaf stores such an edge), judged by its direction. The
 // fill does not cross those edges. A leaf the fill cannot reach is tested by ray casting.
 // Returns how many leaves needed the ray cast (0 for any polygon the rules describe).
-size_t classifyLeaves(Quadtree& tree);
+//
+// A polygon of at most `rayCastBelow` edges skips the fill: casting a ray against a few edges
+// per leaf is cheaper than visiting every leaf's neighbours (a 261k-leaf floor of 11 edges: 90
+// against 110 ms).
+size_t classifyLeaves(Quadtree& tree, size_t rayCastBelow = 0);
 
 }  // namespace mesher

@@ -367,7 +367,7 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
 
   // Classification: leaves holding edges are boundary (set as they were stored), the others
   // lie wholly on one side.
-  classifyLeaves(tree);
+  classifyLeaves(tree, 32);
   tree.complete = true;
   return tree;
 }
