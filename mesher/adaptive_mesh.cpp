@@ -1,5 +1,9 @@
 #include "mesher/adaptive_mesh.h"
 
+#include "mesher/classify.h"
+
+#include <glm/common.hpp>
+
 #include <algorithm>
 
 namespace mesher {
@@ -99,11 +103,17 @@ void AdaptiveMesh::removeLeafElements(int32_t leaf, MeshDelta& delta) {
   leafRings_[static_cast<size_t>(leaf)].clear();
 }
 
-MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex) {
+MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<int32_t>& restyled) {
   Quadtree& tree = built_.tree;
   MeshDelta delta;
-  // Leaves that are gone lose their elements; the quadrants that are leaves now are new.
+  // Leaves that changed side without splitting (inside a hole now, or again) lose their elements.
   std::vector<int32_t> fresh;
+  for (int32_t q : restyled)
+    if (tree[q].isLeaf() && inTree(tree, q)) {
+      removeLeafElements(q, delta);
+      fresh.push_back(q);
+    }
+  // Leaves that are gone lose their elements; the quadrants that are leaves now are new.
   for (const Quadtree::Change& change : tree.changes) {
     if (change.isMerge()) {
       for (int32_t c = change.before.firstChild; c < change.before.firstChild + 4; ++c) removeLeafElements(c, delta);
@@ -186,6 +196,111 @@ MeshDelta AdaptiveMesh::coarsen(ElementId e) {
   }
   mergeUnneededBalanceSplits(std::move(candidates));
   return applyChanges(firstNewVertex);
+}
+
+std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
+  Quadtree& tree = built_.tree;
+  QuadtreeInput& in = tree.input;
+  if (ring.size() < 3 || !isSimple(ring) || signedArea(ring) == 0) return {-1, {}};
+
+  // In tree coordinates, clockwise (the polygon's inside on the left of each edge).
+  Ring2 plane = ring;
+  if (signedArea(plane) > 0) std::reverse(plane.begin(), plane.end());
+  Ring2 points;
+  for (const Vec2& p : plane) points.push_back(treePoint(built_.frame, p));
+  if (!isSimple(points)) return {-1, {}};
+
+  // Strictly inside the polygon as it is: every point inside, no edge meeting an active edge,
+  // no active edge's end inside the ring (a hole within the hole).
+  const double clearance = kGridSnap;
+  for (const Vec2& p : points)
+    if (!rayCastInside(in, p)) return {-1, {}};
+  for (uint32_t e = 0; e < in.edges.size(); ++e) {
+    if (!in.active(e)) continue;
+    const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
+    if (containsPoint(points, a)) return {-1, {}};
+    for (size_t i = 0; i < points.size(); ++i)
+      if (segmentDistance(a, b, points[i], points[(i + 1) % points.size()]) <= clearance) return {-1, {}};
+  }
+
+  // Add the ring to the tree's input.
+  const auto firstVertex = static_cast<uint32_t>(in.vertices.size());
+  const auto firstEdge = static_cast<uint32_t>(in.edges.size());
+  const auto count = static_cast<uint32_t>(points.size());
+  Vec2 lo = points.front(), hi = points.front();
+  for (uint32_t i = 0; i < count; ++i) {
+    in.vertices.push_back(points[i]);
+    lo = glm::min(lo, points[i]), hi = glm::max(hi, points[i]);
+    in.edges.push_back({firstVertex + i, firstVertex + (i + 1) % count});
+    in.edgeOutOf.push_back(firstEdge + i);
+    in.edgeInto.push_back(firstEdge + (i + count - 1) % count);
+  }
+  in.removed.resize(in.edges.size(), 0);
+  const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
+  emitter_->addInputVertices(firstVertex, plane);
+
+  // Store its vertices and edges (5.2); a ring needing more levels than the tree has is refused.
+  bool stored = true;
+  for (uint32_t i = 0; i < count && stored; ++i) stored = tree.insertVertex(firstVertex + i);
+  for (uint32_t i = 0; i < count && stored; ++i) stored = tree.insertEdge(0, firstEdge + i);
+  if (!stored) {
+    tree.undoChanges(0);
+    for (uint32_t i = 0; i < count; ++i) tree.forgetVertex(firstVertex + i);
+    for (uint32_t i = 0; i < count; ++i) tree.forgetEdge(firstEdge + i);
+    return {-1, {}};
+  }
+
+  // Leaves with no edge inside the ring are outside the polygon now. Every leaf the ring's box
+  // touches may have taken a vertex or an edge without splitting: all are emitted again.
+  std::vector<int32_t> around;
+  tree.leavesIn(lo, hi, around);
+  for (int32_t q : around) {
+    const Quadrant& leaf = tree[q];
+    if (leaf.edgeCount > 0 || leaf.status == QuadStatus::Outside) continue;
+    const double half = static_cast<double>(tree.edgeLength(leaf)) / 2;
+    if (containsPoint(points, {leaf.x + half, leaf.y + half})) tree.quadrants[static_cast<size_t>(q)].status = QuadStatus::Outside;
+  }
+  balanceAround(tree, around);
+  holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
+  return {static_cast<int>(holes_.size() - 1), applyChanges(firstNewVertex, around)};
+}
+
+MeshDelta AdaptiveMesh::removeHole(int hole) {
+  if (hole < 0 || static_cast<size_t>(hole) >= holes_.size() || !holes_[static_cast<size_t>(hole)].active) return {};
+  InsertedHole& h = holes_[static_cast<size_t>(hole)];
+  h.active = false;
+  Quadtree& tree = built_.tree;
+  const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
+  for (uint32_t i = 0; i < h.count; ++i) tree.forgetEdge(h.firstEdge + i);
+  for (uint32_t i = 0; i < h.count; ++i) tree.forgetVertex(h.firstVertex + i);
+
+  // Leaves left without edges, and those inside the former hole, take their side again; every
+  // leaf the box touches is emitted again.
+  std::vector<int32_t> around;
+  tree.leavesIn(h.lo, h.hi, around);
+  for (int32_t q : around) {
+    const Quadrant& leaf = tree[q];
+    if (leaf.edgeCount > 0) continue;
+    const double half = static_cast<double>(tree.edgeLength(leaf)) / 2;
+    tree.quadrants[static_cast<size_t>(q)].status =
+        rayCastInside(tree.input, {leaf.x + half, leaf.y + half}) ? QuadStatus::Inside : QuadStatus::Outside;
+  }
+  const std::vector<int32_t> restyled = around;
+
+  // Merge back, bottom up, whatever the rules, the patch size and balance allow.
+  for (bool merged = true; merged;) {
+    merged = false;
+    around.clear();
+    tree.leavesIn(h.lo, h.hi, around);
+    for (int32_t q : around) {
+      const int32_t parent = tree[q].parent;
+      if (parent >= 0 && !tree[parent].isLeaf() && tree.canMerge(parent)) {
+        tree.merge(parent);
+        merged = true;
+      }
+    }
+  }
+  return applyChanges(firstNewVertex, restyled);
 }
 
 }  // namespace mesher

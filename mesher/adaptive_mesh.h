@@ -56,6 +56,17 @@ class AdaptiveMesh {
   // only for balance and no longer need to be. Otherwise nothing. e must be alive.
   MeshDelta coarsen(ElementId e);
 
+  // Cuts a hole into the mesh (a contact cut-out, a window appearing): `ring` is simple, either
+  // winding, and lies strictly inside the polygon, apart from its boundary and other holes.
+  // The hole's edges are stored, the leaves inside it drop out, and the tree splits and
+  // rebalances around it. Returns the hole's id and the delta, or -1 and no change when the ring
+  // is not valid there or needs more tree levels than there are.
+  std::pair<int, MeshDelta> insertHole(const Ring2& ring);
+  // Takes an inserted hole out again: the leaves around it merge back as far as the rules,
+  // the patch size and balance allow (an insert then a remove restores the mesh). Nothing for
+  // an unknown or already removed id.
+  MeshDelta removeHole(int hole);
+
  private:
   struct Slot {
     std::array<uint32_t, 4> corners{};
@@ -64,7 +75,7 @@ class AdaptiveMesh {
     bool alive = false;
   };
 
-  MeshDelta applyChanges(uint32_t firstNewVertex);
+  MeshDelta applyChanges(uint32_t firstNewVertex, const std::vector<int32_t>& restyled = {});
   void removeLeafElements(int32_t leaf, MeshDelta& delta);
   void emitLeaf(int32_t leaf, MeshDelta& delta);
   void mergeUnneededBalanceSplits(std::vector<int32_t> candidates);
@@ -76,6 +87,12 @@ class AdaptiveMesh {
   std::vector<std::vector<uint32_t>> leafSlots_;    // per quadrant: its elements' slots
   std::vector<std::vector<uint32_t>> leafRings_;    // per quadrant: the ring ids it was emitted with
   std::vector<std::array<uint32_t, 4>> scratch_;
+  struct InsertedHole {
+    uint32_t firstVertex, firstEdge, count;
+    Vec2 lo, hi;  // tree bounding box
+    bool active;
+  };
+  std::vector<InsertedHole> holes_;
 };
 
 }  // namespace mesher

@@ -16,8 +16,9 @@ class SideLyingEdges {
  public:
   SideLyingEdges(const Quadtree& tree, std::vector<uint8_t>& blocked, std::vector<std::pair<int32_t, bool>>& seeds) {
     const QuadtreeInput& in = tree.input;
-    for (const auto& [i, j] : in.edges) {
-      const Vec2 a = in.vertices[i], b = in.vertices[j];
+    for (uint32_t e = 0; e < in.edges.size(); ++e) {
+      if (!in.active(e)) continue;
+      const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
       const bool vertical = a.x == b.x && a.x == std::round(a.x);
       const bool horizontal = a.y == b.y && a.y == std::round(a.y);
       if (!vertical && !horizontal) continue;
@@ -59,16 +60,18 @@ Shared sharedSide(const Quadtree& tree, int32_t q, int32_t n, Side side) {
   return {false, side == Side::South ? ay : ay + sa, std::max(ax, bx), std::min(ax + sa, bx + sb)};
 }
 
+}  // namespace
+
 bool rayCastInside(const QuadtreeInput& input, Vec2 p) {
   bool inside = false;
-  for (const auto& [i, j] : input.edges) {
-    const Vec2 a = input.vertices[i], b = input.vertices[j];
+  for (uint32_t e = 0; e < input.edges.size(); ++e) {
+    if (!input.active(e)) continue;
+    const Vec2 a = input.vertices[input.edges[e][0]], b = input.vertices[input.edges[e][1]];
     if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
   }
   return inside;
 }
 
-}  // namespace
 
 size_t classifyLeaves(Quadtree& tree, size_t rayCastBelow) {
   const std::vector<int32_t> leaves = tree.leaves();

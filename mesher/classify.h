@@ -18,4 +18,8 @@ namespace mesher {
 // against 110 ms).
 size_t classifyLeaves(Quadtree& tree, size_t rayCastBelow = 0);
 
+// Even-odd test of a point against the polygon's active edges (tree coordinates); the point must
+// not lie on an edge.
+bool rayCastInside(const QuadtreeInput& input, Vec2 p);
+
 }  // namespace mesher

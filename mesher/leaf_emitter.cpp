@@ -79,7 +79,18 @@ LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& bui
   // Input vertices take ids 0..n-1, as in the vertex list (two at one tree point cannot occur:
   // the tree would have refused them).
   bool added;
-  for (const Vec2& v : built.tree.input.vertices) ids_->findOrAdd(v, added);
+  for (const Vec2& v : built.tree.input.vertices) inputToMesh_.push_back(ids_->findOrAdd(v, added));
+}
+
+void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plane) {
+  inputToMesh_.resize(first);
+  bool added;
+  for (size_t i = 0; i < plane.size(); ++i) {
+    const uint32_t id = ids_->findOrAdd(built_.tree.input.vertices[first + i], added);
+    if (added) vertices_.push_back(plane[i]);
+    else vertices_[id] = plane[i];  // a grid point there already: it is the input vertex now
+    inputToMesh_.push_back(id);
+  }
 }
 
 LeafEmitter::~LeafEmitter() = default;
@@ -92,7 +103,7 @@ const LeafRegion& LeafEmitter::region(int32_t q) {
   for (const RegionPoint& p : region.ring) {
     uint32_t id;
     if (p.inputVertex >= 0) {
-      id = static_cast<uint32_t>(p.inputVertex);
+      id = inputToMesh_[static_cast<size_t>(p.inputVertex)];
     } else {
       id = ids_->findOrAdd(p.at, added);
       if (added) vertices_.push_back(built_.frame.toPlane(p.at));

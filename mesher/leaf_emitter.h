@@ -31,6 +31,10 @@ class LeafEmitter {
   const std::vector<uint32_t>& ringIds(int32_t q);
   const std::vector<uint32_t>& lastRingIds() const { return ringIds_; }
 
+  // Registers input vertices added to the tree after the emitter was made (a hole inserted):
+  // plane[i] is the exact plane position of tree input vertex `first + i`.
+  void addInputVertices(uint32_t first, const std::vector<Vec2>& plane);
+
   const std::vector<Vec2>& vertices() const { return vertices_; }
   std::vector<Vec2> takeVertices() { return std::move(vertices_); }
 
@@ -40,6 +44,7 @@ class LeafEmitter {
   const PolygonTree& built_;
   std::unique_ptr<PointIds> ids_;
   std::vector<Vec2> vertices_;
+  std::vector<uint32_t> inputToMesh_;  // mesh vertex id of each tree input vertex
   LeafRegionBuilder regions_;
   std::vector<Vec2> ring_;  // tree coordinates
   std::vector<uint32_t> ringIds_;

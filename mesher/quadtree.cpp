@@ -72,11 +72,14 @@ bool Quadtree::insertVertex(uint32_t v) {
       for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
       continue;
     }
-    if (quad.vertex < 0) {
+    const bool edgesEndHere = std::all_of(quad.edges.begin(), quad.edges.begin() + quad.edgeCount, [&](uint32_t e) {
+      return input.edges[e][0] == v || input.edges[e][1] == v;
+    });
+    if (quad.vertex < 0 && edgesEndHere) {
       quad.vertex = static_cast<int32_t>(v);
       continue;
     }
-    if (input.vertices[static_cast<size_t>(quad.vertex)] == input.vertices[v]) return false;  // repeated
+    if (quad.vertex >= 0 && input.vertices[static_cast<size_t>(quad.vertex)] == input.vertices[v]) return false;  // repeated
     if (!splitLeaf(q)) return false;  // the children take the old vertex; try the new one again
     stack.push_back(q);
   }
@@ -157,12 +160,61 @@ bool Quadtree::insideOf(const Quadrant& leaf, Vec2 p) const {
 
 void Quadtree::edgesThrough(int32_t q, std::vector<uint32_t>& out) const {
   for (uint32_t e = 0; e < input.edges.size(); ++e)
-    if (crossedBy(q, e)) out.push_back(e);
+    if (input.active(e) && crossedBy(q, e)) out.push_back(e);
+}
+
+void Quadtree::leavesIn(Vec2 lo, Vec2 hi, std::vector<int32_t>& out) const {
+  std::vector<int32_t> stack{0};
+  while (!stack.empty()) {
+    const int32_t q = stack.back();
+    stack.pop_back();
+    const Quadrant& quad = (*this)[q];
+    const double s = static_cast<double>(edgeLength(quad));
+    if (quad.x > hi.x || quad.y > hi.y || quad.x + s < lo.x || quad.y + s < lo.y) continue;
+    if (quad.isLeaf()) {
+      out.push_back(q);
+      continue;
+    }
+    for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
+  }
+}
+
+void Quadtree::forgetEdge(uint32_t e) {
+  std::vector<int32_t> stack{0};
+  while (!stack.empty()) {
+    const int32_t q = stack.back();
+    stack.pop_back();
+    if (!crossedBy(q, e)) continue;
+    Quadrant& quad = quadrants[static_cast<size_t>(q)];
+    if (!quad.isLeaf()) {
+      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
+      continue;
+    }
+    auto* end = std::remove(quad.edges.begin(), quad.edges.begin() + quad.edgeCount, e);
+    quad.edgeCount = static_cast<uint8_t>(end - quad.edges.begin());
+  }
+  if (input.removed.size() < input.edges.size()) input.removed.resize(input.edges.size(), 0);
+  input.removed[e] = 1;
+}
+
+void Quadtree::forgetVertex(uint32_t v) {
+  std::vector<int32_t> stack{0};
+  while (!stack.empty()) {
+    const int32_t q = stack.back();
+    stack.pop_back();
+    if (!holdsPoint(q, input.vertices[v])) continue;
+    Quadrant& quad = quadrants[static_cast<size_t>(q)];
+    if (!quad.isLeaf()) {
+      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
+      continue;
+    }
+    if (quad.vertex == static_cast<int32_t>(v)) quad.vertex = -1;
+  }
 }
 
 bool Quadtree::canMerge(int32_t q) const {
   const Quadrant& node = (*this)[q];
-  if (node.isLeaf()) return false;
+  if (node.isLeaf() || node.level < uniformDepth) return false;
   int32_t vertex = -1;
   bool outside = true;
   for (int32_t c = node.firstChild; c < node.firstChild + 4; ++c) {
@@ -315,20 +367,22 @@ void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const 
   }
 }
 
+Vec2 treePoint(const TreeFrame& frame, Vec2 plane) {
+  // Rounding in the turn and scale leaves points a hair off the grid lines they belong on (the
+  // far side of a rectangle, an extreme point just outside the root square): snap them onto the
+  // grid and into the root. Only the tree sees this; output keeps the input coordinates.
+  const double root = std::exp2(frame.maxDepth);
+  Vec2 t = glm::clamp(frame.toTree(plane), Vec2{0}, Vec2{root});
+  for (int k = 0; k < 2; ++k)
+    if (std::abs(t[k] - std::round(t[k])) <= kGridSnap) t[k] = std::round(t[k]);
+  return t;
+}
+
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame) {
   QuadtreeInput input;
   auto addRing = [&](const Ring2& ring, bool counterClockwise) {
     const auto first = static_cast<uint32_t>(input.vertices.size());
-    // Rounding in the turn and scale leaves points a hair off the grid lines they belong on (the
-    // far side of a rectangle, an extreme point just outside the root square): snap them onto the
-    // grid and into the root. Only the tree sees this; output keeps the input coordinates.
-    const double root = std::exp2(frame.maxDepth);
-    for (const Vec2& p : ring) {
-      Vec2 t = glm::clamp(frame.toTree(p), Vec2{0}, Vec2{root});
-      for (int k = 0; k < 2; ++k)
-        if (std::abs(t[k] - std::round(t[k])) <= kGridSnap) t[k] = std::round(t[k]);
-      input.vertices.push_back(t);
-    }
+    for (const Vec2& p : ring) input.vertices.push_back(treePoint(frame, p));
     const bool reverse = (signedArea(ring) > 0) != counterClockwise;
     const auto n = static_cast<uint32_t>(ring.size());
     for (uint32_t i = 0; i < n; ++i) {
@@ -369,6 +423,7 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
   // lie wholly on one side.
   classifyLeaves(tree, 32);
   tree.complete = true;
+  tree.uniformDepth = depth;
   return tree;
 }
 

@@ -39,6 +39,9 @@ struct QuadtreeInput {
   std::vector<Vec2> vertices;                   // tree coordinates, outer ring first, then holes
   std::vector<std::array<uint32_t, 2>> edges;
   std::vector<uint32_t> edgeInto, edgeOutOf;    // per vertex
+  std::vector<uint8_t> removed;                 // per edge: its hole has been taken out again
+
+  bool active(uint32_t e) const { return e >= removed.size() || !removed[e]; }
 };
 
 enum class Side : uint8_t { West, East, South, North };
@@ -49,6 +52,7 @@ class Quadtree {
   std::vector<Quadrant> quadrants;  // [0] is the root
   QuadtreeInput input;
   bool complete = false;  // every vertex and edge stored and every leaf classified
+  int uniformDepth = 0;   // lambda of 5.2: no leaf is coarser (no merge goes above it)
 
   int64_t edgeLength(const Quadrant& q) const { return int64_t{1} << (maxDepth - q.level); }
   const Quadrant& operator[](int32_t q) const { return quadrants[static_cast<size_t>(q)]; }
@@ -76,8 +80,8 @@ class Quadtree {
   bool insertEdge(int32_t q, uint32_t e);
 
   // Whether node q's four children, all leaves, may become one leaf again (5.5): the merged
-  // square keeps the rules of 5.2, and no neighbour inside or on the boundary would be more than
-  // one level finer.
+  // square is no coarser than the patch size, keeps the rules of 5.2, and no neighbour inside or
+  // on the boundary would be more than one level finer.
   bool canMerge(int32_t q) const;
   // Makes node q a leaf holding its children's vertex and edges; canMerge(q) must hold. The
   // children's quadrants are left unused.
@@ -94,6 +98,13 @@ class Quadtree {
   // Reverts the changes after the first `keep` (a split that ran out of depth part way).
   void undoChanges(size_t keep);
 
+  // The leaves whose closed square meets the box [lo, hi].
+  void leavesIn(Vec2 lo, Vec2 hi, std::vector<int32_t>& out) const;
+  // Takes edge e out of every leaf that stores it, and vertex v (when given) out of every leaf
+  // that holds it; marks the edge removed.
+  void forgetEdge(uint32_t e);
+  void forgetVertex(uint32_t v);
+
  private:
   void addChildren(int32_t q);
   bool holdsPoint(int32_t q, Vec2 p) const;
@@ -103,6 +114,10 @@ class Quadtree {
   // The input edges through node q's open square (all of them are checked: a merge is rare).
   void edgesThrough(int32_t q, std::vector<uint32_t>& out) const;
 };
+
+// A plane point in tree coordinates: within the root square, snapped onto grid lines it lies
+// within kGridSnap of.
+Vec2 treePoint(const TreeFrame& frame, Vec2 plane);
 
 // Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`).
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame);

@@ -165,3 +165,80 @@ TEST(AdaptiveMesh, RandomEditsKeepTheMeshConforming) {
 
 }  // namespace
 }  // namespace mesher
+
+namespace mesher {
+namespace {
+
+// Conformity against the polygon with the inserted holes; inserted hole vertices must be present
+// exactly (they are not at the front of the vertex list, so the check's own test of that is
+// left out).
+void expectConformingWith(const PolygonWithHoles& polygon, const AdaptiveMesh& mesh) {
+  const Mesh snapshot = mesh.snapshot();
+  const MeshCheck c = checkMesh(polygon, snapshot);
+  EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
+  EXPECT_EQ(c.notCounterClockwiseOrConvex, 0u);
+  EXPECT_EQ(c.tVertices, 0u);
+  EXPECT_EQ(c.unmatchedInnerEdges, 0u);
+  EXPECT_EQ(c.repeatedEdges, 0u);
+  for (const Ring2& hole : polygon.holes)
+    for (const Vec2& p : hole) EXPECT_NE(std::find(snapshot.vertices.begin(), snapshot.vertices.end(), p), snapshot.vertices.end());
+}
+
+const Ring2 kCutOut{{150.3, 20.7}, {171.9, 20.7}, {171.9, 31.1}, {150.3, 31.1}};  // a desk's footprint, say
+
+TEST(AdaptiveMeshHoles, InsertingAHoleCutsItOutLocally) {
+  AdaptiveMesh mesh(kWall, {12});
+  const size_t before = mesh.elements().size();
+  const auto [id, delta] = mesh.insertHole(kCutOut);
+  ASSERT_GE(id, 0);
+  EXPECT_FALSE(delta.empty());
+  EXPECT_LT(delta.removed.size(), before / 4);  // local
+  PolygonWithHoles cut = kWall;
+  cut.holes.push_back(Ring2(kCutOut.rbegin(), kCutOut.rend()));
+  expectConformingWith(cut, mesh);
+  EXPECT_LE(largestLevelJump(mesh), 1);
+}
+
+TEST(AdaptiveMeshHoles, RemovingTheHoleRestoresTheMesh) {
+  AdaptiveMesh mesh(kWall, {12});
+  const auto original = shape(mesh);
+  const auto [id, inserted] = mesh.insertHole(kCutOut);
+  ASSERT_GE(id, 0);
+  EXPECT_NE(shape(mesh), original);
+  EXPECT_FALSE(mesh.removeHole(id).empty());
+  EXPECT_EQ(shape(mesh), original);
+  expectConforming(kWall, mesh);
+  EXPECT_TRUE(mesh.removeHole(id).empty());  // already gone
+}
+
+TEST(AdaptiveMeshHoles, MovingAHoleIsARemoveAndAnInsert) {
+  AdaptiveMesh mesh(kWall, {12});
+  int id = mesh.insertHole(kCutOut).first;
+  Ring2 moved = kCutOut;
+  for (int step = 0; step < 10; ++step) {
+    for (Vec2& p : moved) p.x -= 7.3;
+    mesh.removeHole(id);
+    id = mesh.insertHole(moved).first;
+    ASSERT_GE(id, 0) << step;
+  }
+  PolygonWithHoles cut = kWall;
+  cut.holes.push_back(Ring2(moved.rbegin(), moved.rend()));
+  expectConformingWith(cut, mesh);
+}
+
+TEST(AdaptiveMeshHoles, RingsThatDoNotFitAreRefused) {
+  AdaptiveMesh mesh(kWall, {12});
+  const auto original = shape(mesh);
+  EXPECT_EQ(mesh.insertHole({{230, 10}, {250, 10}, {250, 20}, {230, 20}}).first, -1);  // crosses the border
+  EXPECT_EQ(mesh.insertHole({{40, 50}, {50, 50}, {50, 60}, {40, 60}}).first, -1);      // inside the window
+  EXPECT_EQ(mesh.insertHole({{20, 30}, {80, 30}, {80, 90}, {20, 90}}).first, -1);      // around the window
+  EXPECT_EQ(mesh.insertHole({{60, 50}, {70, 50}, {70, 60}, {60, 60}}).first, -1);      // overlaps it
+  EXPECT_EQ(mesh.insertHole({{100, 10}, {110, 20}, {110, 10}, {100, 20}}).first, -1);  // crosses itself
+  EXPECT_EQ(shape(mesh), original);
+  const int id = mesh.insertHole(kCutOut).first;
+  ASSERT_GE(id, 0);
+  EXPECT_EQ(mesh.insertHole({{160, 25}, {165, 25}, {165, 28}}).first, -1);  // inside the first
+}
+
+}  // namespace
+}  // namespace mesher
