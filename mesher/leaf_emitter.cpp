@@ -128,13 +128,13 @@ void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
   if (leaf.templateKey >= 0) {
     const auto key = static_cast<size_t>(leaf.templateKey);
     if (!haveTemplate_[key]) {
-      removeSubdomains(ring_, -1, templates_[key]);
+      removeSubdomains(ring_, -1, built_.frame.planePerTree(), templates_[key]);
       haveTemplate_[key] = true;
     }
     elements = &templates_[key];
   } else {
     pieces_.clear();
-    removeSubdomains(ring_, leaf.hinge, pieces_);
+    removeSubdomains(ring_, leaf.hinge, built_.frame.planePerTree(), pieces_);
   }
   for (const RingElement& piece : *elements) {
     std::array<uint32_t, 4> element{0xffffffffu, 0xffffffffu, 0xffffffffu, 0xffffffffu};

@@ -107,20 +107,30 @@ bool fanFromHinge(const std::vector<Vec2>& ring, size_t hinge, std::vector<RingE
   return true;
 }
 
-void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, std::vector<RingElement>& out) {
-  if (preferredHinge >= 0 && fanFromHinge(ring, static_cast<size_t>(preferredHinge), out)) return;
+void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, Vec2 shapeScale, std::vector<RingElement>& out) {
+  // Angles are judged with the ring scaled to its true proportions.
+  std::vector<Vec2> shaped(ring);
+  for (Vec2& p : shaped) p *= shapeScale;
+  auto smallestAngle = [&](const std::vector<RingElement>& elements) {
+    double angle = 180;
+    for (const RingElement& e : elements) angle = std::min(angle, smallestAngleDeg(shaped, e));
+    return angle;
+  };
+  // A hinge beats the best so far with a clearly larger smallest angle, or as large an angle
+  // and fewer elements. The thesis' hinge goes first, so it wins ties.
   std::vector<RingElement> best, trial;
   double bestAngle = -1;
-  for (size_t h = 0; h < ring.size(); ++h) {
+  auto consider = [&](size_t h) {
     trial.clear();
-    if (!fanFromHinge(ring, h, trial)) continue;
-    double angle = 180;
-    for (const RingElement& e : trial) angle = std::min(angle, smallestAngleDeg(ring, e));
-    if (best.empty() || trial.size() < best.size() || (trial.size() == best.size() && angle > bestAngle)) {
-      best = trial;
-      bestAngle = angle;
-    }
-  }
+    if (!fanFromHinge(ring, h, trial)) return;
+    const double angle = smallestAngle(trial);
+    const bool better = best.empty() || angle > bestAngle + 1 ||
+                        (angle > bestAngle - 1 && trial.size() < best.size());
+    if (better) best = trial, bestAngle = angle;
+  };
+  if (preferredHinge >= 0) consider(static_cast<size_t>(preferredHinge));
+  for (size_t h = 0; h < ring.size(); ++h)
+    if (static_cast<int>(h) != preferredHinge) consider(h);
   if (!best.empty()) {
     out.insert(out.end(), best.begin(), best.end());
     return;

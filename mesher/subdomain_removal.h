@@ -24,10 +24,12 @@ struct RingElement {
 // its vertex) split the fan.
 bool fanFromHinge(const std::vector<Vec2>& ring, size_t hinge, std::vector<RingElement>& out);
 
-// The mesh of a ring: the fan from `preferredHinge` when it works (the rule of 5.4), else the
-// fan over the hinge that gives the fewest elements and then the largest smallest angle, else
-// (a ring no point sees whole) ear clipping with triangle pairs merged into convex quads.
-void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, std::vector<RingElement>& out);
+// The mesh of a ring: the fan from the hinge whose elements have the largest smallest angle
+// (within a degree, the one with fewer elements; `preferredHinge`, the rule of 5.4, first among
+// equals), else (a ring no point sees whole) ear clipping with triangle pairs merged into convex
+// quads. Shapes are judged on `ring` (tree coordinates, where collinear grid points are exact),
+// angles on the ring scaled by `shapeScale` (plane units per tree unit on each axis).
+void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, Vec2 shapeScale, std::vector<RingElement>& out);
 
 // The smallest interior angle of an element, in degrees.
 double smallestAngleDeg(const std::vector<Vec2>& points, const RingElement& element);
