@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   viewCommand->add_option("--height", view.height, "window height")->check(CLI::Range(64, 16384));
   viewCommand->add_option("--frames", view.frames, "close after this many frames")->check(CLI::NonNegativeNumber);
   viewCommand->add_option("--screenshot", view.screenshot, "with --frames: save the last frame as PNG");
+  viewCommand->add_flag("--wireframe", view.wireframe, "start with the mesh edges drawn");
 
   app::MeshOptions mesh;
   CLI::App* meshCommand = cli.add_subcommand("mesh", "mesh a scene or a polygon case and print statistics");

@@ -132,6 +132,7 @@ int runView(const ViewOptions& options) {
     renderer.upload(mesh);
     PanelState panel;
     panel.exposure = static_cast<float>(engine::autoExposure(mesh));
+    panel.wireframe = options.wireframe;
     WalkSettings walk;
     walk.speed = defaultWalkSpeed(scene);
 

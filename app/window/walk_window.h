@@ -11,6 +11,7 @@ struct ViewOptions {
   int width = 1280, height = 720;
   int frames = 0;          // > 0: close after this many frames (scripts, tests)
   std::string screenshot;  // with `frames`: save the last frame here
+  bool wireframe = false;  // start with the mesh edges drawn
 };
 
 // Runs the window until it is closed; returns the process exit code, having printed one line on
