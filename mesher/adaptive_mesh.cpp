@@ -212,7 +212,7 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
 
   // Strictly inside the polygon as it is: every point inside, no edge meeting an active edge,
   // no active edge's end inside the ring (a hole within the hole).
-  const double clearance = kGridSnap;
+  const double clearance = tree.gridSnap;
   for (const Vec2& p : points)
     if (!rayCastInside(in, p)) return {-1, {}};
   for (uint32_t e = 0; e < in.edges.size(); ++e) {

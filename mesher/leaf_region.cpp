@@ -7,9 +7,9 @@ namespace mesher {
 
 namespace {
 
-double snapToGrid(double v) {
+double snapToGrid(double v, double tolerance) {
   const double r = std::round(v);
-  return std::abs(v - r) <= kGridSnap ? r : v;
+  return std::abs(v - r) <= tolerance ? r : v;
 }
 
 // The square's border as a line parameter running counter-clockwise from the lower-left corner.
@@ -44,15 +44,15 @@ Clip clipToSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {
   return c;
 }
 
-Vec2 onSideLine(Vec2 a, Vec2 b, int side, double x0, double y0, double x1, double y1) {
+Vec2 onSideLine(Vec2 a, Vec2 b, int side, double x0, double y0, double x1, double y1, double snap) {
   const double line = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
   if (side < 2) {
     // Always interpolate from the edge's own start so both leaves of the line agree.
     const double y = a.y + (line - a.x) * (b.y - a.y) / (b.x - a.x);
-    return {line, snapToGrid(std::clamp(y, y0, y1))};
+    return {line, snapToGrid(std::clamp(y, y0, y1), snap)};
   }
   const double x = a.x + (line - a.y) * (b.x - a.x) / (b.y - a.y);
-  return {snapToGrid(std::clamp(x, x0, x1)), line};
+  return {snapToGrid(std::clamp(x, x0, x1), snap), line};
 }
 
 // The template key of an interior square's border points: the sides holding exactly their
@@ -125,7 +125,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
       const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
       const Clip c = clipToSquare(a, b, x0, y0, x1, y1);
       const int side = entry ? c.entrySide : c.exitSide;
-      return RegionPoint{onSideLine(a, b, side, x0, y0, x1, y1)};
+      return RegionPoint{onSideLine(a, b, side, x0, y0, x1, y1, tree.gridSnap)};
     };
     if (leaf.vertex >= 0) {
       const auto v = static_cast<uint32_t>(leaf.vertex);
@@ -152,10 +152,14 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
                              [](const RegionPoint& a, const RegionPoint& b) { return a.at == b.at; }),
                  onBorder.end());
 
-  if (path.empty()) {
-    if (leaf.status != QuadStatus::Inside) return region;
+  // An edge that only grazes a corner (its crossings snapped onto one point) leaves the square
+  // wholly on one side: which, its own direction says at the centre.
+  const bool grazing = leaf.vertex < 0 && path.size() == 2 && path.front().at == path.back().at;
+  if (path.empty() || grazing) {
+    const bool inside = grazing ? tree.insideAt(q, {x0 + s / 2, y0 + s / 2}) : leaf.status == QuadStatus::Inside;
+    if (!inside) return region;
     region.ring.assign(onBorder.begin(), onBorder.end());
-    if (!vertexOnBorder) region.templateKey = midpointSides(onBorder, x0, y0, s);
+    if (!vertexOnBorder && !grazing) region.templateKey = midpointSides(onBorder, x0, y0, s);
     return region;
   }
 

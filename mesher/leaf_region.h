@@ -25,7 +25,7 @@ struct LeafRegion {
 // Builds the region of leaf q: its corners and the T-vertices of finer neighbours on the inside
 // part of its border, the crossings of its stored edges and its vertex. Crossings are computed
 // from the edge and the grid line alone, so the leaves on both sides of a line agree exactly;
-// crossings within kGridSnap of a grid point snap to it. The builder keeps its scratch memory
+// crossings within the tree's gridSnap of a grid point snap to it. The builder keeps its scratch memory
 // from leaf to leaf; a returned region lives until the next build.
 class LeafRegionBuilder {
  public:

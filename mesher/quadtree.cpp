@@ -374,7 +374,7 @@ Vec2 treePoint(const TreeFrame& frame, Vec2 plane) {
   const double root = std::exp2(frame.maxDepth);
   Vec2 t = glm::clamp(frame.toTree(plane), Vec2{0}, Vec2{root});
   for (int k = 0; k < 2; ++k)
-    if (std::abs(t[k] - std::round(t[k])) <= kGridSnap) t[k] = std::round(t[k]);
+    if (std::abs(t[k] - std::round(t[k])) <= frame.gridSnap) t[k] = std::round(t[k]);
   return t;
 }
 
@@ -404,9 +404,10 @@ QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& fr
   return input;
 }
 
-std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth) {
+std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap) {
   Quadtree tree;
   tree.maxDepth = maxDepth;
+  tree.gridSnap = gridSnap;
   tree.input = std::move(input);
   tree.quadrants.reserve(size_t{4} << (2 * std::min(depth, 10)));
   tree.quadrants.push_back(Quadrant{});
@@ -433,7 +434,7 @@ PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, 
   const int depth = initialDepth(longerExtent, patchSize, kDeepest);
   for (int maxDepth = std::min(kDeepest, depth + 16 + deeper);; maxDepth = std::min(kDeepest, maxDepth + 8)) {
     PolygonTree result{setupTreeFrame(polygon, maxDepth), depth, {}};
-    if (auto tree = buildQuadtree(quadtreeInput(polygon, result.frame), maxDepth, depth)) {
+    if (auto tree = buildQuadtree(quadtreeInput(polygon, result.frame), maxDepth, depth, result.frame.gridSnap)) {
       result.tree = std::move(*tree);
       return result;
     }

@@ -13,9 +13,6 @@
 
 namespace mesher {
 
-// Tree coordinates this close to an integer are taken to lie on that grid line (tree units; the
-// smallest quadrant is 1).
-constexpr double kGridSnap = 1e-6;
 
 enum class QuadStatus : uint8_t { Node, Undefined, Outside, Boundary, Inside };
 
@@ -53,6 +50,7 @@ class Quadtree {
   QuadtreeInput input;
   bool complete = false;  // every vertex and edge stored and every leaf classified
   int uniformDepth = 0;   // lambda of 5.2: no leaf is coarser (no merge goes above it)
+  double gridSnap = 1e-6;  // the frame's: computed points this close to a grid line lie on it
 
   int64_t edgeLength(const Quadrant& q) const { return int64_t{1} << (maxDepth - q.level); }
   const Quadrant& operator[](int32_t q) const { return quadrants[static_cast<size_t>(q)]; }
@@ -116,7 +114,7 @@ class Quadtree {
 };
 
 // A plane point in tree coordinates: within the root square, snapped onto grid lines it lies
-// within kGridSnap of.
+// within frame.gridSnap of.
 Vec2 treePoint(const TreeFrame& frame, Vec2 plane);
 
 // Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`).
@@ -127,7 +125,7 @@ QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& fr
 // ending at it; without one, at most one edge. Leaves holding edges are Boundary; every other
 // leaf is Inside or Outside by its centre. Returns nothing when two vertices cannot be separated
 // within maxDepth levels (the caller builds a deeper tree: vertices are never merged).
-std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth);
+std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap = 1e-6);
 
 // A polygon's tree for a patch size: the frame of 5.1, the depth of 5.2, and a maximum depth
 // that starts 16 + `deeper` levels below the patch size and grows by 8 (up to 50) whenever two

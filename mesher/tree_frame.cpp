@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 
 namespace mesher {
@@ -68,6 +69,13 @@ TreeFrame setupTreeFrame(const PolygonWithHoles& polygon, int maxDepth) {
   frame.scale = root / extent[longAxis];
   const double shortScaled = extent[frame.shortAxis] * frame.scale;
   frame.stretch = std::max(1.0, nextPowerOfTwo(shortScaled)) / shortScaled;
+
+  // Rounding in tree coordinates: of the root square's size, and of the plane coordinates (their
+  // magnitude, carried through the turn and the scale).
+  double magnitude = 0;
+  for (const Vec2& p : polygon.outer) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
+  constexpr double kEpsilon = 0x1p-52;
+  frame.gridSnap = std::max({1e-6, 16 * root * kEpsilon, 16 * magnitude * kEpsilon * frame.scale * frame.stretch});
   return frame;
 }
 

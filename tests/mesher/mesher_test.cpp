@@ -114,6 +114,39 @@ TEST(MeshChecks, AspectRatioIsOneForEquilateralAndFallsForSlivers) {
   EXPECT_LT(checkMesh(sliver, thin).smallestAspectRatio, 0.05);
 }
 
+// Edges grazing a quadrant corner by a rounding error: the leaf is wholly in or out, not both.
+TEST(Mesher, EdgesGrazingACorner) {
+  for (double d : {1e-12, -1e-12, 0.0}) {
+    SCOPED_TRACE(d);
+    expectGoodMesh({{{0, 0}, {4, 0}, {4, 1}, {3.7, 1.3 + d}, {1.3 + d, 3.7}, {1, 4}, {0, 4}}, {}}, 1);
+    expectGoodMesh({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1.3, 1.7 + d}, {2.7 + d, 2.0}, {1.3, 2.7}}}}, 1);
+  }
+  // An equilateral triangle off the origin: symmetry runs its edges through grid corners.
+  expectGoodMesh({{{12345.678, 12345.678}, {12346.610327345606, 12346.039615431964}, {12345.830995522321, 12346.66622688192}}, {}}, 0.3);
+  expectGoodMesh({{{1000047.7668244563, -333318.55732300022}, {999963.32018745679, -333299.35405506258}, {999988.91298808693, -333382.08862193709}}, {}}, 5);
+}
+
+// Deep trees (vertices 1e-9 apart) and far offsets round more coarsely than 1e-6 tree units; the
+// snapping tolerance follows.
+TEST(Mesher, RoundingOfDeepTreesAndFarOffsets) {
+  expectGoodMesh({{{0, 0}, {0.80802750831215187, 0.5891447579422695}, {0.21888275036988236, 1.3971722662544215},
+                   {-0.58914475713424197, 0.8080275089012966}, {-0.58914475735312477, 0.80802750750412433}}, {}},
+                 0.25);
+  expectGoodMesh({{{-7416671.1031101998, 1502475.9262439848}, {-7416670.0739553943, 1502510.0250075285},
+                   {-7416637.326077804, 1502519.5833205667}, {-7416618.1159311989, 1502491.3919193558},
+                   {-7416638.9912852589, 1502464.4103621789}}, {}},
+                 18.823691242856832);
+}
+
+// Two holes a hair apart crowd many vertices along the gap; meshing stays fast (this once took
+// seconds with spatially laid-out vertex ids).
+TEST(Mesher, HolesAHairApart) {
+  const double g = 1e-4;
+  expectGoodMesh({{{0, 0}, {16, 0}, {16, 16}, {0, 16}},
+                  {{{4, 4}, {4, 12}, {7.3 - g / 2, 12}, {7.3 - g / 2, 4}}, {{7.3 + g / 2, 4}, {7.3 + g / 2, 12}, {12, 12}, {12, 4}}}},
+                 1);
+}
+
 // The checks themselves catch broken meshes, so a passing mesh means something.
 TEST(MeshChecks, CatchBrokenMeshes) {
   const PolygonWithHoles square{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}};
