@@ -10,13 +10,12 @@ namespace mesher {
 // Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
 // alike (corners are integers, crossings come from the edge and the line alone). Open addressing
 // over ids only, the points themselves kept in id order, so a quarter of a million points cost
-// no allocation each and the table stays small. Slots come from a full hash of the point: a
-// spatial (Morton) layout was faster on uniform meshes but let points crowded near a feature
-// share one slot run, which made lookups quadratic.
+// no allocation each and the table stays small.
 class PointIds {
  public:
-  explicit PointIds(size_t expected) {
+  PointIds(size_t expected, double rootSize) : toUnit_(1 / rootSize) {
     slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
+    shift_ = 64 - std::countr_zero(slots_.size());
     points_.reserve(expected);
   }
 
@@ -49,14 +48,29 @@ class PointIds {
     x *= 0x94D049BB133111EBull;
     return x ^ (x >> 31);
   }
+  static uint64_t spreadBits(uint64_t v) {  // 32 bits to the even bits of 64
+    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
+    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
+    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
+    v = (v | (v << 2)) & 0x3333333333333333ull;
+    return (v | (v << 1)) & 0x5555555555555555ull;
+  }
+  // The point's Morton (Z-order) cell at the table's resolution (the order leaves are visited
+  // in), scattered within a window of 65,536 slots (256 KiB) by a hash of the exact point:
+  // lookups stay near each other in memory, and points crowded into one cell (along a narrow
+  // gap) do not share one probe run, which made lookups quadratic.
   size_t slotOf(Vec2 p) const {
+    const auto x = static_cast<uint64_t>(std::clamp(p.x * toUnit_, 0.0, 1.0) * 4294967295.0);
+    const auto y = static_cast<uint64_t>(std::clamp(p.y * toUnit_, 0.0, 1.0) * 4294967295.0);
     uint64_t a, b;
     std::memcpy(&a, &p.x, sizeof a);
     std::memcpy(&b, &p.y, sizeof b);
-    return static_cast<size_t>(mix(a ^ mix(b))) & (slots_.size() - 1);
+    const uint64_t cell = (spreadBits(x) | spreadBits(y) << 1) >> shift_;
+    return static_cast<size_t>(cell ^ (mix(a ^ mix(b)) & 65535)) & (slots_.size() - 1);
   }
   void grow() {
     slots_.assign(slots_.size() * 2, kEmpty);
+    shift_ -= 1;
     for (uint32_t id = 0; id < points_.size(); ++id) {
       size_t slot = slotOf(points_[id]);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
@@ -64,13 +78,15 @@ class PointIds {
     }
   }
 
+  double toUnit_;
+  int shift_ = 0;
   std::vector<uint32_t> slots_;
   std::vector<Vec2> points_;  // tree coordinates, by id
 };
 
 LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
     : built_(built),
-      ids_(std::make_unique<PointIds>(expectedLeaves + built.tree.input.vertices.size())),
+      ids_(std::make_unique<PointIds>(expectedLeaves + built.tree.input.vertices.size(), std::exp2(built.tree.maxDepth))),
       regions_(built.tree) {
   vertices_ = polygon.outer;
   for (const Ring2& hole : polygon.holes) vertices_.insert(vertices_.end(), hole.begin(), hole.end());
