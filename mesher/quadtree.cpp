@@ -13,6 +13,29 @@ namespace mesher {
 
 namespace {
 
+enum class Visit { Done, Again, Fail };
+
+// Visits the leaves below quadrant `from` that `meets` accepts (it is asked of every quadrant on
+// the way down). `atLeaf` may split the leaf and answer Again to have it visited as a node, or
+// Fail to stop; the result is false then.
+template <typename Meets, typename AtLeaf>
+bool descend(const Quadtree& tree, int32_t from, Meets meets, AtLeaf atLeaf) {
+  std::vector<int32_t> stack{from};
+  while (!stack.empty()) {
+    const int32_t q = stack.back();
+    stack.pop_back();
+    if (!meets(q)) continue;
+    if (!tree[q].isLeaf()) {
+      for (int32_t c = 0; c < 4; ++c) stack.push_back(tree[q].firstChild + c);
+      continue;
+    }
+    const Visit visit = atLeaf(q);
+    if (visit == Visit::Fail) return false;
+    if (visit == Visit::Again) stack.push_back(q);
+  }
+  return true;
+}
+
 bool inClosedSquare(Vec2 p, double x0, double y0, double x1, double y1) {
   return x0 <= p.x && p.x <= x1 && y0 <= p.y && p.y <= y1;
 }
@@ -62,50 +85,31 @@ bool Quadtree::accepts(const Quadrant& leaf, uint32_t e) const {
 }
 
 bool Quadtree::insertVertex(uint32_t v) {
-  std::vector<int32_t> stack{0};
-  while (!stack.empty()) {
-    const int32_t q = stack.back();
-    stack.pop_back();
-    if (!holdsPoint(q, input.vertices[v])) continue;
+  const Vec2 p = input.vertices[v];
+  return descend(*this, 0, [&](int32_t q) { return holdsPoint(q, p); }, [&](int32_t q) {
     Quadrant& quad = quadrants[static_cast<size_t>(q)];
-    if (!quad.isLeaf()) {
-      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
-      continue;
-    }
     const bool edgesEndHere = std::all_of(quad.edges.begin(), quad.edges.begin() + quad.edgeCount, [&](uint32_t e) {
       return input.edges[e][0] == v || input.edges[e][1] == v;
     });
     if (quad.vertex < 0 && edgesEndHere) {
       quad.vertex = static_cast<int32_t>(v);
-      continue;
+      return Visit::Done;
     }
-    if (quad.vertex >= 0 && input.vertices[static_cast<size_t>(quad.vertex)] == input.vertices[v]) return false;  // repeated
-    if (!splitLeaf(q)) return false;  // the children take the old vertex; try the new one again
-    stack.push_back(q);
-  }
-  return true;
+    if (quad.vertex >= 0 && input.vertices[static_cast<size_t>(quad.vertex)] == p) return Visit::Fail;  // repeated
+    return splitLeaf(q) ? Visit::Again : Visit::Fail;  // the children take the old content
+  });
 }
 
 bool Quadtree::insertEdge(int32_t below, uint32_t e) {
-  std::vector<int32_t> stack{below};
-  while (!stack.empty()) {
-    const int32_t q = stack.back();
-    stack.pop_back();
-    if (!crossedBy(q, e)) continue;
+  return descend(*this, below, [&](int32_t q) { return crossedBy(q, e); }, [&](int32_t q) {
     Quadrant& quad = quadrants[static_cast<size_t>(q)];
-    if (!quad.isLeaf()) {
-      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
-      continue;
-    }
     if (accepts(quad, e)) {
       quad.edges[quad.edgeCount++] = e;
       quad.status = QuadStatus::Boundary;
-      continue;
+      return Visit::Done;
     }
-    if (!splitLeaf(q)) return false;
-    stack.push_back(q);
-  }
-  return true;
+    return splitLeaf(q) ? Visit::Again : Visit::Fail;
+  });
 }
 
 bool Quadtree::splitLeaf(int32_t q) {
@@ -164,52 +168,33 @@ void Quadtree::edgesThrough(int32_t q, std::vector<uint32_t>& out) const {
 }
 
 void Quadtree::leavesIn(Vec2 lo, Vec2 hi, std::vector<int32_t>& out) const {
-  std::vector<int32_t> stack{0};
-  while (!stack.empty()) {
-    const int32_t q = stack.back();
-    stack.pop_back();
+  const auto meets = [&](int32_t q) {
     const Quadrant& quad = (*this)[q];
     const double s = static_cast<double>(edgeLength(quad));
-    if (quad.x > hi.x || quad.y > hi.y || quad.x + s < lo.x || quad.y + s < lo.y) continue;
-    if (quad.isLeaf()) {
-      out.push_back(q);
-      continue;
-    }
-    for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
-  }
+    return !(quad.x > hi.x || quad.y > hi.y || quad.x + s < lo.x || quad.y + s < lo.y);
+  };
+  descend(*this, 0, meets, [&](int32_t q) {
+    out.push_back(q);
+    return Visit::Done;
+  });
 }
 
 void Quadtree::forgetEdge(uint32_t e) {
-  std::vector<int32_t> stack{0};
-  while (!stack.empty()) {
-    const int32_t q = stack.back();
-    stack.pop_back();
-    if (!crossedBy(q, e)) continue;
+  descend(*this, 0, [&](int32_t q) { return crossedBy(q, e); }, [&](int32_t q) {
     Quadrant& quad = quadrants[static_cast<size_t>(q)];
-    if (!quad.isLeaf()) {
-      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
-      continue;
-    }
     auto* end = std::remove(quad.edges.begin(), quad.edges.begin() + quad.edgeCount, e);
     quad.edgeCount = static_cast<uint8_t>(end - quad.edges.begin());
-  }
+    return Visit::Done;
+  });
   if (input.removed.size() < input.edges.size()) input.removed.resize(input.edges.size(), 0);
   input.removed[e] = 1;
 }
 
 void Quadtree::forgetVertex(uint32_t v) {
-  std::vector<int32_t> stack{0};
-  while (!stack.empty()) {
-    const int32_t q = stack.back();
-    stack.pop_back();
-    if (!holdsPoint(q, input.vertices[v])) continue;
-    Quadrant& quad = quadrants[static_cast<size_t>(q)];
-    if (!quad.isLeaf()) {
-      for (int32_t c = 0; c < 4; ++c) stack.push_back(quad.firstChild + c);
-      continue;
-    }
-    if (quad.vertex == static_cast<int32_t>(v)) quad.vertex = -1;
-  }
+  descend(*this, 0, [&](int32_t q) { return holdsPoint(q, input.vertices[v]); }, [&](int32_t q) {
+    if (quadrants[static_cast<size_t>(q)].vertex == static_cast<int32_t>(v)) quadrants[static_cast<size_t>(q)].vertex = -1;
+    return Visit::Done;
+  });
 }
 
 bool Quadtree::canMerge(int32_t q) const {

@@ -2,6 +2,7 @@
 #include "mesher/adaptive_mesh.h"
 
 #include "mesher/mesh_check.h"
+#include "tests/mesher/mesh_expectations.h"
 #include "tests/mesher/random_polygons.h"
 
 #include <glm/geometric.hpp>
@@ -18,13 +19,7 @@ namespace {
 const PolygonWithHoles kWall{{{0, 0}, {240, 0}, {240, 96}, {0, 96}}, {{{30, 40}, {30, 80}, {66, 80}, {66, 40}}}};
 
 void expectConforming(const PolygonWithHoles& polygon, const AdaptiveMesh& mesh) {
-  const MeshCheck c = checkMesh(polygon, mesh.snapshot());
-  EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
-  EXPECT_EQ(c.notCounterClockwiseOrConvex, 0u);
-  EXPECT_EQ(c.movedInputVertices, 0u);
-  EXPECT_EQ(c.tVertices, 0u);
-  EXPECT_EQ(c.unmatchedInnerEdges, 0u);
-  EXPECT_EQ(c.repeatedEdges, 0u);
+  test::expectValidMesh(checkMesh(polygon, mesh.snapshot()));
 }
 
 // The mesh as a set of elements by corner positions, so meshes compare whatever their ids.
@@ -174,12 +169,7 @@ namespace {
 // left out).
 void expectConformingWith(const PolygonWithHoles& polygon, const AdaptiveMesh& mesh) {
   const Mesh snapshot = mesh.snapshot();
-  const MeshCheck c = checkMesh(polygon, snapshot);
-  EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
-  EXPECT_EQ(c.notCounterClockwiseOrConvex, 0u);
-  EXPECT_EQ(c.tVertices, 0u);
-  EXPECT_EQ(c.unmatchedInnerEdges, 0u);
-  EXPECT_EQ(c.repeatedEdges, 0u);
+  test::expectValidMesh(checkMesh(polygon, snapshot), false);
   for (const Ring2& hole : polygon.holes)
     for (const Vec2& p : hole) EXPECT_NE(std::find(snapshot.vertices.begin(), snapshot.vertices.end(), p), snapshot.vertices.end());
 }

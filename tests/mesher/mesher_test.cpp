@@ -3,6 +3,7 @@
 
 #include "mesher/mesh_check.h"
 
+#include "tests/mesher/mesh_expectations.h"
 #include "tests/mesher/random_polygons.h"
 
 #include <gtest/gtest.h>
@@ -18,12 +19,7 @@ void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize, int line 
   SCOPED_TRACE("mesh of line " + std::to_string(line));
   const Mesh mesh = meshPolygon(polygon, {patchSize});
   const MeshCheck c = checkMesh(polygon, mesh);
-  EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
-  EXPECT_EQ(c.notCounterClockwiseOrConvex, 0u);
-  EXPECT_EQ(c.movedInputVertices, 0u);
-  EXPECT_EQ(c.tVertices, 0u);
-  EXPECT_EQ(c.unmatchedInnerEdges, 0u);
-  EXPECT_EQ(c.repeatedEdges, 0u);
+  test::expectValidMesh(c);
   EXPECT_LE(c.largestDiameter, patchSize * std::sqrt(2.0) * (1 + 1e-9));
 }
 
