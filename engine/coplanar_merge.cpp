@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <tuple>
 
 namespace engine {
 
@@ -145,8 +146,33 @@ std::vector<Surface> mergeCoplanarSurfaces(const Scene& scene, std::vector<Surfa
     while (root[i] != i) i = root[i] = root[root[i]];
     return i;
   };
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) {
+  // Candidates sorted by material, owner, facing and plane offset: only neighbours in that order
+  // can belong together. (Facings rounded to 1e-6 may rarely split a group: it then stays apart.)
+  struct Key {
+    uint32_t material;
+    int64_t owner, nx, ny, nz;
+    double offset;
+    size_t index;
+  };
+  std::vector<Key> keys;
+  for (size_t i = 0; i < n; ++i) {
+    const Surface& s = surfaces[i];
+    auto round = [](double v) { return static_cast<int64_t>(std::llround(v * 1e6)); };
+    keys.push_back({s.material, scene.objects[s.object].movable ? static_cast<int64_t>(s.object) : -1,
+                    round(s.normal.x), round(s.normal.y), round(s.normal.z), s.planeOffset(), i});
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    return std::tie(a.material, a.owner, a.nx, a.ny, a.nz, a.offset) < std::tie(b.material, b.owner, b.nx, b.ny, b.nz, b.offset);
+  });
+  for (size_t k = 0; k < n; ++k)
+    for (size_t l = k + 1; l < n; ++l) {
+      const Key& first = keys[k];
+      const Key& second = keys[l];
+      if (std::tie(first.material, first.owner, first.nx, first.ny, first.nz) !=
+              std::tie(second.material, second.owner, second.nx, second.ny, second.nz) ||
+          second.offset - first.offset > tolerance)
+        break;
+      const size_t i = first.index, j = second.index;
       if (!sameGroup(scene, surfaces[i], surfaces[j], tolerance)) continue;
       const mesher::PolygonWithHoles a = planePolygon(surfaces[i], surfaces[i]);
       const mesher::PolygonWithHoles b = planePolygon(surfaces[j], surfaces[i]);
