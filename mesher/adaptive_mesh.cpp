@@ -260,7 +260,12 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
     const double half = static_cast<double>(tree.edgeLength(leaf)) / 2;
     if (containsPoint(points, {leaf.x + half, leaf.y + half})) tree.quadrants[static_cast<size_t>(q)].status = QuadStatus::Outside;
   }
-  balanceAround(tree, around);
+  // Balance around the box and around every leaf the insertion split (their children reach
+  // beyond the box).
+  std::vector<int32_t> seeds = around;
+  for (const Quadtree::Change& change : tree.changes)
+    if (!change.isMerge()) leavesBelow(tree, change.quadrant, seeds);
+  balanceAround(tree, std::move(seeds));
   holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
   return {static_cast<int>(holes_.size() - 1), applyChanges(firstNewVertex, around)};
 }
@@ -287,7 +292,8 @@ MeshDelta AdaptiveMesh::removeHole(int hole) {
   }
   const std::vector<int32_t> restyled = around;
 
-  // Merge back, bottom up, whatever the rules, the patch size and balance allow.
+  // Merge back, bottom up, whatever the rules, the patch size and balance allow. Leaves that
+  // were outside (and so took no part in balancing) are inside now: balance around them.
   for (bool merged = true; merged;) {
     merged = false;
     around.clear();
@@ -300,6 +306,9 @@ MeshDelta AdaptiveMesh::removeHole(int hole) {
       }
     }
   }
+  around.clear();
+  tree.leavesIn(h.lo, h.hi, around);
+  balanceAround(tree, around);
   return applyChanges(firstNewVertex, restyled);
 }
 

@@ -232,3 +232,44 @@ TEST(AdaptiveMeshHoles, RingsThatDoNotFitAreRefused) {
 
 }  // namespace
 }  // namespace mesher
+
+namespace mesher {
+namespace {
+
+// Refines, coarsens, and holes appearing, moving and vanishing, in random order on a wall: after
+// every step the mesh tiles the wall minus the holes present.
+TEST(AdaptiveMeshHoles, RandomEditsWithHoles) {
+  std::mt19937 random(2026);
+  std::uniform_real_distribution<double> unit(0, 1);
+  AdaptiveMesh mesh(kWall, {12});
+  std::vector<std::pair<int, Ring2>> holes;
+  for (int step = 0; step < 120; ++step) {
+    SCOPED_TRACE("step " + std::to_string(step));
+    const double choice = unit(random);
+    if (choice < 0.25) {
+      // A small box somewhere right of the window, where it may or may not fit.
+      const Vec2 corner{80 + 150 * unit(random), 5 + 80 * unit(random)};
+      const Vec2 size{2 + 20 * unit(random), 2 + 10 * unit(random)};
+      const Ring2 ring{corner, corner + Vec2{size.x, 0}, corner + size, corner + Vec2{0, size.y}};
+      const int id = mesh.insertHole(ring).first;
+      if (id >= 0) holes.push_back({id, ring});
+    } else if (choice < 0.4 && !holes.empty()) {
+      const size_t k = static_cast<size_t>(unit(random) * static_cast<double>(holes.size()));
+      EXPECT_FALSE(mesh.removeHole(holes[k].first).empty());
+      holes.erase(holes.begin() + static_cast<ptrdiff_t>(k));
+    } else {
+      const std::vector<ElementId> live = mesh.elements();
+      const ElementId e = live[static_cast<size_t>(unit(random) * static_cast<double>(live.size()))];
+      if (choice < 0.75) mesh.refine(e);
+      else mesh.coarsen(e);
+    }
+    PolygonWithHoles expected = kWall;
+    for (const auto& [id, ring] : holes) expected.holes.push_back(Ring2(ring.rbegin(), ring.rend()));
+    expectConformingWith(expected, mesh);
+    EXPECT_LE(largestLevelJump(mesh), 1) << (choice < 0.25 ? "insert" : choice < 0.4 ? "remove" : choice < 0.75 ? "refine" : "coarsen");
+    ASSERT_FALSE(HasFailure());
+  }
+}
+
+}  // namespace
+}  // namespace mesher
