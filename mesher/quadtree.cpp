@@ -1,3 +1,8 @@
+// The PM quadtree of chapter 5. Sections, in order:
+//   [storage]       splitting, the 5.2 rules, inserting vertices and edges
+//   [sides]         local classification, merging back, forgetting a removed hole's edges
+//   [geometry]      segment against square, leaves, neighbours (Samet's parent-chain search)
+//   [building]      plane to tree coordinates, numbering the rings, the build recipe
 #include "mesher/quadtree.h"
 
 #include "mesher/classify.h"
@@ -41,6 +46,8 @@ bool inClosedSquare(Vec2 p, double x0, double y0, double x1, double y1) {
 }
 
 }  // namespace
+
+// [storage]
 
 void Quadtree::addChildren(int32_t q) {
   const auto first = static_cast<int32_t>(quadrants.size());
@@ -143,6 +150,8 @@ bool Quadtree::splitLeaf(int32_t q) {
   }
   return true;
 }
+
+// [sides]
 
 bool Quadtree::insideOf(const Quadrant& leaf, Vec2 p) const {
   if (leaf.vertex >= 0) {
@@ -265,6 +274,8 @@ bool Quadtree::insideAt(int32_t q, Vec2 p) const {
   return insideOf(leaf, p);
 }
 
+// [geometry]
+
 bool segmentCrossesOpenSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {
   // Liang-Barsky: the part of the segment within the closed square is [t0, t1].
   double t0 = 0, t1 = 1;
@@ -351,6 +362,8 @@ void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const 
     out.push_back(node.firstChild + facing[static_cast<int>(side)][1]);
   }
 }
+
+// [building]
 
 Vec2 treePoint(const TreeFrame& frame, Vec2 plane) {
   // Rounding in the turn and scale leaves points a hair off the grid lines they belong on (the
