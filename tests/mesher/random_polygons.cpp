@@ -8,16 +8,30 @@
 
 namespace mesher::test {
 
+namespace {
+
+// `points` points counter-clockwise round `center`, at angles jittered by up to `jitter` of their
+// spacing and at radii from `nearest` x radius to radius.
+Ring2 ringAround(std::mt19937& random, Vec2 center, double radius, int points, double jitter, double nearest) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  Ring2 ring;
+  for (int i = 0; i < points; ++i) {
+    const double a = 2 * std::numbers::pi * (i + jitter * unit(random)) / points;
+    const double r = nearest < 1 ? radius * (nearest + (1 - nearest) * unit(random)) : radius;
+    ring.push_back(center + r * Vec2{std::cos(a), std::sin(a)});
+  }
+  return ring;
+}
+
+}  // namespace
+
 PolygonWithHoles randomPolygonWithHoles(std::mt19937& random, int trial, double offset) {
   std::uniform_real_distribution<double> unit(0, 1);
   PolygonWithHoles p;
   const int sides = 3 + trial % 9;
   const double radius = 1 + 100 * unit(random);
   const Vec2 center{2 * offset * (unit(random) - 0.5), 2 * offset * (unit(random) - 0.5)};
-  for (int i = 0; i < sides; ++i) {
-    const double a = 2 * std::numbers::pi * (i + 0.3 * unit(random)) / sides;
-    p.outer.push_back(center + radius * Vec2{std::cos(a), std::sin(a)});
-  }
+  p.outer = ringAround(random, center, radius, sides, 0.3, 1);
   // Holes in the cells of a square grid inside the largest circle about the centre.
   double clearance = radius;
   for (int i = 0; i < sides; ++i) {
@@ -31,12 +45,7 @@ PolygonWithHoles randomPolygonWithHoles(std::mt19937& random, int trial, double 
       if (unit(random) < 0.3) continue;
       const double cell = 2 * inner / cells;
       const Vec2 c = center + Vec2{-inner + (cx + 0.5) * cell, -inner + (cy + 0.5) * cell};
-      Ring2 hole;
-      const int holeSides = 3 + static_cast<int>(unit(random) * 5);
-      for (int i = 0; i < holeSides; ++i) {
-        const double a = 2 * std::numbers::pi * (i + 0.5 * unit(random)) / holeSides;
-        hole.push_back(c + 0.4 * cell * Vec2{std::cos(a), std::sin(a)});
-      }
+      Ring2 hole = ringAround(random, c, 0.4 * cell, 3 + static_cast<int>(unit(random) * 5), 0.5, 1);
       if (trial % 2) std::reverse(hole.begin(), hole.end());
       p.holes.push_back(hole);
     }
@@ -49,23 +58,14 @@ PolygonWithHoles randomStarPolygon(std::mt19937& random, int trial, double offse
   const int points = 6 + trial % 35;
   const double radius = 1 + 100 * unit(random);
   const Vec2 center{2 * offset * (unit(random) - 0.5), 2 * offset * (unit(random) - 0.5)};
-  for (int i = 0; i < points; ++i) {
-    const double a = 2 * std::numbers::pi * (i + 0.8 * unit(random)) / points;
-    p.outer.push_back(center + radius * (0.3 + 0.7 * unit(random)) * Vec2{std::cos(a), std::sin(a)});
-  }
+  p.outer = ringAround(random, center, radius, points, 0.8, 0.3);
   // Angle gaps stay under 108 degrees, so the disk of 0.3 x 0.58 x radius is inside.
   const double clear = 0.3 * 0.58 * radius;
   const int holes = trial % 4;
   for (int h = 0; h < holes; ++h) {
     const double a = 2 * std::numbers::pi * h / std::max(holes, 1);
     const Vec2 c = center + (holes > 1 ? 0.5 * clear : 0.0) * Vec2{std::cos(a), std::sin(a)};
-    Ring2 hole;
-    const int sides = 3 + static_cast<int>(unit(random) * 5);
-    for (int i = 0; i < sides; ++i) {
-      const double b = 2 * std::numbers::pi * (i + 0.5 * unit(random)) / sides;
-      hole.push_back(c + 0.2 * clear * Vec2{std::cos(b), std::sin(b)});
-    }
-    p.holes.push_back(hole);
+    p.holes.push_back(ringAround(random, c, 0.2 * clear, 3 + static_cast<int>(unit(random) * 5), 0.5, 1));
   }
   return p;
 }
