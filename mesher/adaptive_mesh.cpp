@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <unordered_set>
 
 namespace mesher {
 
@@ -196,6 +197,43 @@ MeshDelta AdaptiveMesh::coarsen(ElementId e) {
   }
   mergeUnneededBalanceSplits(std::move(candidates));
   return applyChanges(firstNewVertex);
+}
+
+MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
+                              const std::function<bool(ElementId)>& coarsenIt) {
+  MeshDelta total;
+  total.firstNewVertex = static_cast<uint32_t>(vertices().size());
+  auto collect = [&](const MeshDelta& d) {
+    total.removed.insert(total.removed.end(), d.removed.begin(), d.removed.end());
+    total.added.insert(total.added.end(), d.added.begin(), d.added.end());
+  };
+  for (ElementId e : elements())
+    if (alive(e) && refineIt(e)) collect(refine(e));
+  // Coarsening asks each of the four siblings: merge only when every one agrees.
+  for (ElementId e : elements()) {
+    if (!alive(e) || !coarsenIt(e)) continue;
+    const int32_t parent = built_.tree[slots_[e.slot].leaf].parent;
+    if (parent < 0 || built_.tree[parent].isLeaf()) continue;
+    bool allAgree = true;
+    for (int32_t c = built_.tree[parent].firstChild; c < built_.tree[parent].firstChild + 4 && allAgree; ++c) {
+      if (!built_.tree[c].isLeaf()) allAgree = false;
+      else if (static_cast<size_t>(c) < leafSlots_.size())
+        for (uint32_t s : leafSlots_[static_cast<size_t>(c)]) allAgree = allAgree && coarsenIt({s, slots_[s].generation});
+    }
+    if (allAgree) collect(coarsen(e));
+  }
+  // Elements both added and removed within the pass never reached the caller.
+  std::unordered_set<uint64_t> addedHere;
+  for (ElementId e : total.added) addedHere.insert(uint64_t{e.slot} << 32 | e.generation);
+  std::vector<ElementId> removed, added;
+  for (ElementId e : total.removed)
+    if (!addedHere.count(uint64_t{e.slot} << 32 | e.generation)) removed.push_back(e);
+  for (ElementId e : total.added)
+    if (alive(e)) added.push_back(e);
+  total.removed = std::move(removed);
+  total.added = std::move(added);
+  total.vertexCount = static_cast<uint32_t>(vertices().size());
+  return total;
 }
 
 std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,13 @@ class AdaptiveMesh {
   // the storage rules and 2:1 balance allows it; then merges quadrants nearby that were split
   // only for balance and no longer need to be. Otherwise nothing. e must be alive.
   MeshDelta coarsen(ElementId e);
+
+  // One pass of adaptive refinement as the caller decides it (a radiosity gradient, a test):
+  // refines every live element `refineIt` accepts, then coarsens every live element
+  // `coarsenIt` accepts (four siblings merge only when all of them agree to go and the rules
+  // allow). Returns the combined delta: removed and added ids of elements that lived through the
+  // pass are dropped from both.
+  MeshDelta adapt(const std::function<bool(ElementId)>& refineIt, const std::function<bool(ElementId)>& coarsenIt);
 
   // Cuts a hole into the mesh (a contact cut-out, a window appearing): `ring` is simple, either
   // winding, and lies strictly inside the polygon, apart from its boundary and other holes.

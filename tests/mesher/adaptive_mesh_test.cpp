@@ -273,3 +273,37 @@ TEST(AdaptiveMeshHoles, RandomEditsWithHoles) {
 
 }  // namespace
 }  // namespace mesher
+
+namespace mesher {
+namespace {
+
+Vec2 centerOf(const AdaptiveMesh& mesh, ElementId e) {
+  Vec2 sum{0};
+  int n = 0;
+  for (uint32_t v : mesh.corners(e))
+    if (v != Mesh::kNone) sum += mesh.vertices()[v], ++n;
+  return sum / static_cast<double>(n);
+}
+
+// Adaptation driven from outside, as the solver will drive it: refine near a "shadow edge",
+// then let everything coarsen again.
+TEST(AdaptiveMesh, AdaptRefinesAndCoarsensWhereTheCallerSays) {
+  AdaptiveMesh mesh(kWall, {12});
+  const auto original = shape(mesh);
+  auto nearLine = [&](ElementId e) { return std::abs(centerOf(mesh, e).x - 150) < 10; };
+  const int before = mesh.level(elementNear(mesh, {150, 20}));
+  for (int pass = 0; pass < 2; ++pass) {
+    const MeshDelta delta = mesh.adapt(nearLine, [](ElementId) { return false; });
+    EXPECT_FALSE(delta.empty());
+    for (ElementId e : delta.added) EXPECT_TRUE(mesh.alive(e));
+    for (ElementId e : delta.removed) EXPECT_FALSE(mesh.alive(e));
+  }
+  EXPECT_EQ(mesh.level(elementNear(mesh, {150, 20})), before + 2);
+  EXPECT_EQ(mesh.level(elementNear(mesh, {10, 20})), before);  // far away: untouched
+  expectConforming(kWall, mesh);
+  for (int pass = 0; pass < 6; ++pass) mesh.adapt([](ElementId) { return false; }, [](ElementId) { return true; });
+  EXPECT_EQ(shape(mesh), original);  // coarsened back to the patch size, no further
+}
+
+}  // namespace
+}  // namespace mesher
