@@ -431,7 +431,7 @@ PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, 
   const double longerExtent = 1 / setupTreeFrame(polygon, 0).scale;  // a root of edge 1
   const int depth = initialDepth(longerExtent, patchSize, kDeepest);
   for (int maxDepth = std::min(kDeepest, depth + 16 + deeper);; maxDepth = std::min(kDeepest, maxDepth + 8)) {
-    PolygonTree result{setupTreeFrame(polygon, maxDepth), depth, {}};
+    PolygonTree result{setupTreeFrame(polygon, maxDepth), {}};
     if (auto tree = buildQuadtree(quadtreeInput(polygon, result.frame), maxDepth, depth, result.frame.gridSnap)) {
       result.tree = std::move(*tree);
       return result;

@@ -133,7 +133,6 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
 // (repeated or crossing vertices).
 struct PolygonTree {
   TreeFrame frame;
-  int depth = 0;  // lambda: the uniform depth of the patch size
   Quadtree tree;
 };
 PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, int deeper = 0);

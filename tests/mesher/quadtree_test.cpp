@@ -120,12 +120,12 @@ void expectClassification(const PolygonTree& built, const PolygonWithHoles& poly
 TEST(Quadtree, ARectangleHasNoBoundaryQuadrants) {
   const PolygonWithHoles rectangle{{{3, 2}, {35, 2}, {35, 14}, {3, 14}}, {}};
   const PolygonTree built = buildPolygonTree(rectangle, 4);
-  EXPECT_EQ(built.depth, 3);
+  EXPECT_EQ(built.tree.uniformDepth, 3);
   int inside = 0;
   for (int32_t index : built.tree.leaves()) {
     const Quadrant& q = built.tree.quadrants[static_cast<size_t>(index)];
     EXPECT_NE(q.status, QuadStatus::Boundary);
-    EXPECT_EQ(q.level, built.depth);  // nothing forced deeper
+    EXPECT_EQ(q.level, built.tree.uniformDepth);  // nothing forced deeper
     inside += q.status == QuadStatus::Inside;
   }
   EXPECT_EQ(inside, 8 * 4);  // 32 x 12 at patch 4: 8 along x, 4 (a power of two) along y
@@ -163,7 +163,7 @@ TEST(Quadtree, RandomPolygonsKeepTheRules) {
 TEST(Quadtree, CloseVerticesDeepenTheTree) {
   const PolygonWithHoles sliver{{{0, 0}, {1, 0}, {1, 1}, {1e-6, 1}, {0, 1 - 1e-6}}, {}};
   const PolygonTree built = buildPolygonTree(sliver, 0.25);
-  EXPECT_GT(built.frame.maxDepth, built.depth + 16);
+  EXPECT_GT(built.frame.maxDepth, built.tree.uniformDepth + 16);
   expectRulesHold(built.tree);
   std::set<int32_t> owners;
   for (int32_t index : built.tree.leaves())
