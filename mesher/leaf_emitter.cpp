@@ -1,5 +1,7 @@
 #include "mesher/leaf_emitter.h"
 
+#include "mesher/mesher.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -139,21 +141,35 @@ const std::vector<uint32_t>& LeafEmitter::ringIds(int32_t q) {
 void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
   const LeafRegion& leaf = region(q);
   if (leaf.ring.empty()) return;
+  const Vec2 inner = leaf.inner;
   const std::vector<RingElement>* elements = &pieces_;
   if (leaf.templateKey >= 0) {
     const auto key = static_cast<size_t>(leaf.templateKey);
     if (!haveTemplate_[key]) {
-      removeSubdomains(ring_, -1, built_.frame.planePerTree(), templates_[key]);
+      removeSubdomains(ring_, -1, &inner, built_.frame.planePerTree(), templates_[key]);
       haveTemplate_[key] = true;
     }
     elements = &templates_[key];
   } else {
     pieces_.clear();
-    removeSubdomains(ring_, leaf.hinge, built_.frame.planePerTree(), pieces_);
+    removeSubdomains(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_);
   }
+  const size_t innerIndex = ring_.size();
+  uint32_t innerId = Mesh::kNone;
   for (const RingElement& piece : *elements) {
-    std::array<uint32_t, 4> element{0xffffffffu, 0xffffffffu, 0xffffffffu, 0xffffffffu};
-    for (uint8_t k = 0; k < piece.count; ++k) element[k] = ringIds_[piece.v[k]];
+    std::array<uint32_t, 4> element{Mesh::kNone, Mesh::kNone, Mesh::kNone, Mesh::kNone};
+    for (uint8_t k = 0; k < piece.count; ++k) {
+      if (piece.v[k] != innerIndex) {
+        element[k] = ringIds_[piece.v[k]];
+        continue;
+      }
+      if (innerId == Mesh::kNone) {
+        bool added;
+        innerId = ids_->findOrAdd(inner, added);
+        if (added) vertices_.push_back(built_.frame.toPlane(inner));
+      }
+      element[k] = innerId;
+    }
     out.push_back(element);
   }
 }

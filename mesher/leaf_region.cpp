@@ -160,6 +160,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
     if (!inside) return region;
     region.ring.assign(onBorder.begin(), onBorder.end());
     if (!vertexOnBorder && !grazing) region.templateKey = midpointSides(onBorder, x0, y0, s);
+    region.inner = {x0 + s / 2, y0 + s / 2};
     return region;
   }
 
@@ -198,6 +199,9 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
   }
   for (size_t i = 0; i < region.ring.size(); ++i)
     if (region.ring[i].at == hinge) region.hinge = static_cast<int>(i);
+  at_.clear();
+  for (const RegionPoint& p : region.ring) at_.push_back(p.at);
+  region.inner = centroid(at_);
   return region;
 }
 

@@ -20,6 +20,9 @@ struct LeafRegion {
   // bits (1 west, 2 east, 4 south, 8 north); their rings then start at the lower-left corner and
   // differ only in that. -1 for every other leaf.
   int templateKey = -1;
+  // A point its elements may share inside the leaf: the centre of a whole square, else the
+  // region's centroid. Only this leaf can use it, so it cannot make a T-vertex.
+  Vec2 inner{0};
 };
 
 // Builds the region of leaf q: its corners and the T-vertices of finer neighbours on the inside
@@ -38,6 +41,7 @@ class LeafRegionBuilder {
   std::vector<RegionPoint> onBorder_, path_, ring_;
   std::vector<int32_t> across_;
   std::vector<std::pair<double, RegionPoint>> walk_;
+  Ring2 at_;
 };
 
 }  // namespace mesher

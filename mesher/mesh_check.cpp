@@ -31,6 +31,25 @@ double aspectRatio(Vec2 a, Vec2 b, Vec2 c) {
   return 2 * inscribed / circumscribed;
 }
 
+// Per input vertex (outer ring, then holes): whether the polygon's inside angle there is below
+// kAngleBoundDeg. The inside lies left of a counter-clockwise outer ring and right of it for a
+// hole, whichever way the rings are given.
+std::vector<bool> sharpInputCorners(const std::vector<Ring2>& rings) {
+  std::vector<bool> sharp;
+  for (size_t r = 0; r < rings.size(); ++r) {
+    const Ring2& ring = rings[r];
+    const bool insideLeft = (signedArea(ring) > 0) == (r == 0);
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 at = ring[i], toNext = ring[(i + 1) % ring.size()] - at, toPrev = ring[(i + ring.size() - 1) % ring.size()] - at;
+      double turn = std::atan2(cross(toNext, toPrev), glm::dot(toNext, toPrev));  // next to prev, counter-clockwise
+      if (turn < 0) turn += 2 * std::numbers::pi;
+      const double inside = (insideLeft ? turn : 2 * std::numbers::pi - turn) * 180 / std::numbers::pi;
+      sharp.push_back(inside < kAngleBoundDeg);
+    }
+  }
+  return sharp;
+}
+
 uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t{a} << 32 | b; }
 
 // Undirected edges bucketed on a uniform grid, for "which edges pass near this point".
@@ -91,6 +110,7 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
   size_t index = 0;
   for (const Ring2& ring : rings)
     for (const Vec2& p : ring) check.movedInputVertices += index >= mesh.vertices.size() || mesh.vertices[index++] != p;
+  const std::vector<bool> sharpCorner = sharpInputCorners(rings);
 
   // Element shape, area, and how often each directed edge is used.
   std::unordered_map<uint64_t, int> edgeUse;
@@ -98,18 +118,23 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
   for (const auto& e : mesh.elements) {
     const size_t n = e[3] == Mesh::kNone ? 3 : 4;
     double area = 0, diameter = 0;
+    bool belowBound = false;
     const Vec2 origin = mesh.vertices[e[0]];  // areas relative to a corner keep far meshes precise
     for (size_t k = 0; k < n; ++k) {
       const Vec2 a = mesh.vertices[e[k]], b = mesh.vertices[e[(k + 1) % n]], c = mesh.vertices[e[(k + 2) % n]];
       area += 0.5 * cross(a - origin, b - origin);
       if (!(cross(b - a, c - b) > 0)) ++check.notCounterClockwiseOrConvex;
       const Vec2 u = a - b, v = c - b;
-      check.smallestAngleDeg = std::min(check.smallestAngleDeg, std::atan2(std::abs(cross(u, v)), glm::dot(u, v)) * 180 / std::numbers::pi);
+      const double angle = std::atan2(std::abs(cross(u, v)), glm::dot(u, v)) * 180 / std::numbers::pi;
+      check.smallestAngleDeg = std::min(check.smallestAngleDeg, angle);
+      const uint32_t corner = e[(k + 1) % n];
+      belowBound |= angle < kAngleBoundDeg && !(corner < sharpCorner.size() && sharpCorner[corner]);
       for (size_t j = 0; j < n; ++j) diameter = std::max(diameter, glm::length(mesh.vertices[e[j]] - a));
       check.smallestAspectRatio = std::min(check.smallestAspectRatio, aspectRatio(a, b, c));
       if (++edgeUse[edgeKey(e[k], e[(k + 1) % n])] > 1) ++check.repeatedEdges;
     }
     check.elementArea += area;
+    check.belowAngleBound += belowBound;
     check.largestDiameter = std::max(check.largestDiameter, diameter);
   }
 

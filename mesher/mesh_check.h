@@ -16,6 +16,8 @@ struct MeshCheck {
   size_t repeatedEdges = 0;         // a directed edge used by two elements (overlap)
   double largestDiameter = 0;
   double smallestAngleDeg = 180;
+  // Elements with an angle below kAngleBoundDeg other than at an input corner that is sharper.
+  size_t belowAngleBound = 0;
   // The thesis' shape measure, inscribed over circumscribed radius, scaled so an equilateral
   // triangle has 1 (2r/R); a quad counts as its worst corner triangle (a square: 0.83).
   double smallestAspectRatio = 1;

@@ -16,6 +16,11 @@
 
 namespace mesher {
 
+// The smallest element angle Bern, Eppstein and Gilbert's provably good quadtree meshing
+// guarantees, atan(1/3) in degrees: the mesher aims for no angle below it except at input
+// corners that are sharper.
+constexpr double kAngleBoundDeg = 18.4;
+
 struct MeshSettings {
   double patchSize = 1;  // largest element edge along either axis of the tree, in plane units (> 0)
 };

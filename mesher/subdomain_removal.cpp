@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -79,14 +80,6 @@ double angleDeg(Vec2 prev, Vec2 at, Vec2 next) {
 
 }  // namespace
 
-double smallestAngleDeg(const std::vector<Vec2>& points, const RingElement& element) {
-  double smallest = 180;
-  for (uint8_t k = 0; k < element.count; ++k)
-    smallest = std::min(smallest, angleDeg(points[element.v[(k + element.count - 1) % element.count]],
-                                           points[element.v[k]], points[element.v[(k + 1) % element.count]]));
-  return smallest;
-}
-
 bool fanFromHinge(const std::vector<Vec2>& ring, size_t hinge, std::vector<RingElement>& out) {
   const size_t n = ring.size();
   const auto h = static_cast<uint32_t>(hinge);
@@ -107,30 +100,74 @@ bool fanFromHinge(const std::vector<Vec2>& ring, size_t hinge, std::vector<RingE
   return true;
 }
 
-void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, Vec2 shapeScale, std::vector<RingElement>& out) {
+bool fanFromInside(const std::vector<Vec2>& points, size_t start, std::vector<RingElement>& out) {
+  const size_t n = points.size() - 1;
+  const Vec2 inner = points[n];
+  std::vector<uint32_t> run;
+  run.reserve(n + 1);
+  for (size_t k = 0; k <= n; ++k) {
+    const auto i = static_cast<uint32_t>((start + k) % n);
+    if (!run.empty() && !turnsLeft(points[run.back()], points[i], inner)) return false;
+    run.push_back(i);
+  }
+  mergeRun(points, static_cast<uint32_t>(n), run, out);
+  return true;
+}
+
+void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                      std::vector<RingElement>& out) {
+  const size_t n = ring.size();
   // Angles are judged with the ring scaled to its true proportions.
   std::vector<Vec2> shaped(ring);
+  if (inner) shaped.push_back(*inner);
   for (Vec2& p : shaped) p *= shapeScale;
-  auto smallestAngle = [&](const std::vector<RingElement>& elements) {
-    double angle = 180;
-    for (const RingElement& e : elements) angle = std::min(angle, smallestAngleDeg(shaped, e));
-    return angle;
+  // What each ring corner's elements can reach: the bound, or the ring's own angle where sharper.
+  std::vector<double> reach(n + 1, kAngleBoundDeg);
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 prev = shaped[(i + n - 1) % n], at = shaped[i], next = shaped[(i + 1) % n];
+    if (orient2(prev, at, next) > 0) reach[i] = std::min(kAngleBoundDeg, angleDeg(prev, at, next));
+  }
+  // 1 or more when every element angle reaches what it can.
+  auto score = [&](const std::vector<RingElement>& elements) {
+    double worst = std::numeric_limits<double>::infinity();
+    for (const RingElement& e : elements)
+      for (uint8_t k = 0; k < e.count; ++k) {
+        const uint32_t at = e.v[k];
+        if (reach[at] <= 0) continue;
+        const double angle = angleDeg(shaped[e.v[(k + e.count - 1) % e.count]], shaped[at], shaped[e.v[(k + 1) % e.count]]);
+        worst = std::min(worst, angle / reach[at]);
+      }
+    return worst;
   };
-  // A hinge beats the best so far with a clearly larger smallest angle, or as large an angle
-  // and fewer elements. The thesis' hinge goes first, so it wins ties.
+  // Good sets beat the rest; among good ones the fewest elements win, among the rest a clearly
+  // better score (or as good a one with fewer elements). The thesis' hinge goes first, so it
+  // wins ties.
   std::vector<RingElement> best, trial;
-  double bestAngle = -1;
-  auto consider = [&](size_t h) {
-    trial.clear();
-    if (!fanFromHinge(ring, h, trial)) return;
-    const double angle = smallestAngle(trial);
-    const bool better = best.empty() || angle > bestAngle + 1 ||
-                        (angle > bestAngle - 1 && trial.size() < best.size());
-    if (better) best = trial, bestAngle = angle;
+  double bestScore = -1;
+  auto better = [&](double s, size_t count) {
+    if (best.empty()) return true;
+    const bool good = s >= 1, bestGood = bestScore >= 1;
+    if (good != bestGood) return good;
+    if (good) return count < best.size() || (count == best.size() && s > bestScore);
+    return s > bestScore + 0.05 || (s > bestScore - 0.05 && count < best.size());
   };
-  if (preferredHinge >= 0) consider(static_cast<size_t>(preferredHinge));
-  for (size_t h = 0; h < ring.size(); ++h)
-    if (static_cast<int>(h) != preferredHinge) consider(h);
+  // No fan has fewer elements than the n - 2 triangles of a hinge merged in pairs: a good set
+  // that small ends the search.
+  const size_t fewest = (n - 1) / 2;
+  auto done = [&] { return bestScore >= 1 && best.size() <= fewest; };
+  auto consider = [&](bool fanned) {
+    if (!fanned) return;
+    const double s = score(trial);
+    if (better(s, trial.size())) best.swap(trial), bestScore = s;
+  };
+  if (preferredHinge >= 0) trial.clear(), consider(fanFromHinge(ring, static_cast<size_t>(preferredHinge), trial));
+  for (size_t h = 0; h < n && !done(); ++h)
+    if (static_cast<int>(h) != preferredHinge) trial.clear(), consider(fanFromHinge(ring, h, trial));
+  if (inner && !done()) {
+    std::vector<Vec2> around(ring);
+    around.push_back(*inner);
+    for (size_t start = 0; start < n && !done(); ++start) trial.clear(), consider(fanFromInside(around, start, trial));
+  }
   if (!best.empty()) {
     out.insert(out.end(), best.begin(), best.end());
     return;

@@ -3,6 +3,7 @@
 // same procedure over every hinge, which yields the templates of 5.3.
 #pragma once
 
+#include "mesher/mesher.h"
 #include "mesher/polygon.h"
 
 #include <array>
@@ -24,14 +25,19 @@ struct RingElement {
 // its vertex) split the fan.
 bool fanFromHinge(const std::vector<Vec2>& ring, size_t hinge, std::vector<RingElement>& out);
 
-// The mesh of a ring: the fan from the hinge whose elements have the largest smallest angle
-// (within a degree, the one with fewer elements; `preferredHinge`, the rule of 5.4, first among
-// equals), else (a ring no point sees whole) ear clipping with triangle pairs merged into convex
-// quads. Shapes are judged on `ring` (tree coordinates, where collinear grid points are exact),
-// angles on the ring scaled by `shapeScale` (plane units per tree unit on each axis).
-void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, Vec2 shapeScale, std::vector<RingElement>& out);
+// Fans the ring out from `points[ring size]`, a point strictly inside that sees every ring edge,
+// starting at ring[start]; `points` is the ring with that point appended. False, writing
+// nothing, when the point does not see some edge.
+bool fanFromInside(const std::vector<Vec2>& points, size_t start, std::vector<RingElement>& out);
 
-// The smallest interior angle of an element, in degrees.
-double smallestAngleDeg(const std::vector<Vec2>& points, const RingElement& element);
+// The mesh of a ring: among the fans from each hinge and, when `inner` is given (a point inside
+// the ring, index ring.size() in the elements), the fans around it, one whose angles all reach
+// kAngleBoundDeg (or the ring's own corner there, when that is sharper) with the fewest elements;
+// when none does, the one closest to it. `preferredHinge`, the rule of 5.4, wins ties. A ring
+// no point sees whole is ear clipped, triangle pairs merged into convex quads. Shapes are judged
+// on `ring` (tree coordinates, where collinear grid points are exact), angles on the ring scaled
+// by `shapeScale` (plane units per tree unit on each axis).
+void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                      std::vector<RingElement>& out);
 
 }  // namespace mesher

@@ -23,7 +23,7 @@ using OrderedJson = nlohmann::ordered_json;
 
 // What one meshed polygon (a surface or the polygon case) adds to the report.
 struct Tally {
-  size_t elements = 0, quads = 0, vertices = 0, tVertices = 0;
+  size_t elements = 0, quads = 0, vertices = 0, tVertices = 0, belowAngleBound = 0;
   double smallestAngle = 180, smallestAspect = 1;
 
   void add(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh) {
@@ -32,6 +32,7 @@ struct Tally {
     quads += mesh.quadCount();
     vertices += mesh.vertices.size();
     tVertices += check.tVertices;
+    belowAngleBound += check.belowAngleBound;
     smallestAngle = std::min(smallestAngle, check.smallestAngleDeg);
     smallestAspect = std::min(smallestAspect, check.smallestAspectRatio);
   }
@@ -111,14 +112,15 @@ int runMesh(const MeshOptions& options) {
         {"elements", tally.elements},   {"quads", tally.quads},
         {"triangles", tally.elements - tally.quads}, {"vertices", tally.vertices},
         {"t_vertices", tally.tVertices}, {"min_angle_deg", tally.smallestAngle},
-        {"min_aspect_ratio", tally.smallestAspect},
+        {"min_aspect_ratio", tally.smallestAspect}, {"below_angle_bound", tally.belowAngleBound},
         {"mesh_ms", meshMs},
     };
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
-  std::printf("%zu elements (%zu quads, %zu triangles), %zu vertices, %zu T-vertices, smallest angle %.2f deg, %.3f ms\n",
+  std::printf("%zu elements (%zu quads, %zu triangles), %zu vertices, %zu T-vertices, smallest angle %.2f deg "
+              "(%zu elements below %.1f), %.3f ms\n",
               tally.elements, tally.quads, tally.elements - tally.quads, tally.vertices, tally.tVertices,
-              tally.smallestAngle, meshMs);
+              tally.smallestAngle, tally.belowAngleBound, mesher::kAngleBoundDeg, meshMs);
   return 0;
 }
 

@@ -97,6 +97,19 @@ TEST(AdaptiveMesh, RefineThenCoarsenRestoresTheMesh) {
   expectConforming(kWall, mesh);
 }
 
+// A rectangle of 64 x 33 is stretched by 64/33 across (5.1), so its quadrants are twice as long
+// as they are wide in the plane. Refined here and there, squares with T-vertices on their short
+// sides still mesh without an angle below the bound (a fan from a corner would give 14 degrees).
+TEST(AdaptiveMesh, StretchedSquaresWithTVerticesMeetTheAngleBound) {
+  const PolygonWithHoles rectangle{{{0, 0}, {64, 0}, {64, 33}, {0, 33}}, {}};
+  AdaptiveMesh mesh(rectangle, {4});
+  for (const Vec2 p : {Vec2{10, 10}, Vec2{40, 20}, Vec2{41, 21}, Vec2{60, 30}, Vec2{20, 25}}) mesh.refine(elementNear(mesh, p));
+  const MeshCheck check = checkMesh(rectangle, mesh.snapshot());
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
 // Neighbouring elements (sharing an edge) come from quadrants at most one level apart.
 int largestLevelJump(const AdaptiveMesh& mesh) {
   std::map<std::pair<uint32_t, uint32_t>, int> levelOfEdge;

@@ -110,6 +110,29 @@ TEST(MeshChecks, AspectRatioIsOneForEquilateralAndFallsForSlivers) {
   EXPECT_LT(checkMesh(sliver, thin).smallestAspectRatio, 0.05);
 }
 
+// Angles below the bound count against a mesh except at input corners that are sharper.
+TEST(MeshChecks, AnglesBelowTheBoundCountExceptAtSharperInputCorners) {
+  // A 10-degree spike meshed as one triangle: its only small angle is the input corner's own.
+  const double t = std::tan(10 * std::numbers::pi / 180);
+  const PolygonWithHoles spike{{{0, 0}, {10, -5 * t}, {10, 5 * t}}, {}};
+  Mesh one;
+  one.vertices = spike.outer;
+  one.elements = {{0, 1, 2, Mesh::kNone}};
+  EXPECT_EQ(checkMesh(spike, one).belowAngleBound, 0u);
+  // The same spike cut across near its tip: the new corners are not input corners.
+  Mesh cut;
+  cut.vertices = {spike.outer[0], spike.outer[1], spike.outer[2], {1, -t / 2}, {1, t / 2}};
+  cut.elements = {{0, 3, 4, Mesh::kNone}, {3, 1, 2, 4}};
+  EXPECT_EQ(checkMesh(spike, cut).belowAngleBound, 0u);  // the quad's angles are 80 and 100
+  Mesh sliced;
+  sliced.vertices = cut.vertices;
+  sliced.elements = {{0, 3, 4, Mesh::kNone}, {3, 1, 2, Mesh::kNone}, {3, 2, 4, Mesh::kNone}};
+  EXPECT_EQ(checkMesh(spike, sliced).belowAngleBound, 2u);
+  // Either winding, holes included: a square hole's corners are 270 degrees inside the polygon.
+  const PolygonWithHoles frame{{{0, 0}, {0, 3}, {3, 3}, {3, 0}}, {{{1, 1}, {2, 1}, {2, 2}, {1, 2}}}};
+  EXPECT_EQ(checkMesh(frame, meshPolygon(frame, {1})).belowAngleBound, 0u);
+}
+
 // Edges grazing a quadrant corner by a rounding error: the leaf is wholly in or out, not both.
 TEST(Mesher, EdgesGrazingACorner) {
   for (double d : {1e-12, -1e-12, 0.0}) {
