@@ -1,0 +1,60 @@
+// What the graphics processors hand to the ring: set-up primitives binned by screen region.
+// Internal to pxpl5.
+#pragma once
+
+#include "pxpl5/pxpl5.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace pxpl5 {
+
+struct Screen {
+  int width = 0, height = 0;
+  int stride = 0;  // a multiple of kRegionSize
+  int regionsX = 0, regionsY = 0;
+  int regionCount() const { return regionsX * regionsY; }
+  PixelRect region(int r) const {
+    const int x0 = (r % regionsX) * kRegionSize, y0 = (r / regionsX) * kRegionSize;
+    return {x0, y0, std::min(x0 + kRegionSize, stride), std::min(y0 + kRegionSize, height)};
+  }
+};
+
+struct SetupPrimitive {
+  PixelRect bounds;  // within the screen, not empty
+  uint32_t firstEdge = 0, edgeCount = 0;
+  Expression depth;
+  uint32_t value = 0;
+  bool quadratic = false;  // any expression uses the quadratic terms
+};
+
+// One graphics processor's output for one batch of the caller's primitives: its set-up
+// primitives and, per region, which of them touch it (in emission order, so the caller's order).
+struct Emitter::Batch {
+  const Screen* screen = nullptr;
+  std::vector<SetupPrimitive> primitives;
+  std::vector<Expression> edges;
+  std::vector<uint32_t> binStart;  // regionCount + 1 offsets into binned
+  std::vector<uint32_t> binned;    // primitive indices grouped by region
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (region, primitive) before grouping
+
+  void clear() {
+    primitives.clear();
+    edges.clear();
+    pairs.clear();
+  }
+  // Counting sort of `pairs` by region into binStart/binned; stable, so emission order stays.
+  void groupByRegion() {
+    const size_t regions = static_cast<size_t>(screen->regionCount());
+    binStart.assign(regions + 1, 0);
+    for (const auto& p : pairs) ++binStart[p.first + 1];
+    for (size_t r = 0; r < regions; ++r) binStart[r + 1] += binStart[r];
+    binned.resize(pairs.size());
+    std::vector<uint32_t>& fill = scratch;
+    fill.assign(binStart.begin(), binStart.end() - 1);
+    for (const auto& p : pairs) binned[fill[p.first]++] = p.second;
+  }
+  std::vector<uint32_t> scratch;
+};
+
+}  // namespace pxpl5

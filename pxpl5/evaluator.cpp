@@ -1,0 +1,105 @@
+#include "pxpl5/evaluator.h"
+
+#include <bit>
+
+namespace pxpl5 {
+
+namespace {
+
+// The contract's formula (pxpl5.h), term by term in its grouping.
+float evaluate(const Expression& ex, float x, float y, float term) {
+  const float rowA = ex.a + ex.e * y;
+  const float rowC = (ex.b * y + ex.c) + ex.f * (y * y);
+  return ((rowA * x + ex.d * (x * x)) + rowC) + ex.t * term;
+}
+
+// One expression's coefficients with the row's y folded in.
+struct RowTerms {
+  float a = 0, c = 0, d = 0, t = 0;
+};
+
+RowTerms rowTerms(const Expression& ex, float y) {
+  return {ex.a + ex.e * y, (ex.b * y + ex.c) + ex.f * (y * y), ex.d, ex.t};
+}
+
+// Instruction by instruction over a row of the area, as the machine broadcasts them: each loop
+// runs over contiguous floats with no branch (the enable flag is a mask, the conditional writes
+// are selects), so the compiler vectorises it (README: the vectorisation report). Without
+// quadratic terms d*(x*x) is zero and is left out; that changes no outcome (only the sign of a
+// zero that no depth test can pass).
+template <bool kQuadratic>
+void evaluateRows(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+                  EvaluatorStats& stats) {
+  const uint32_t n = primitive.edgeCount;
+  const uint32_t value = primitive.value;
+  const int lo = area.x0, width = area.x1 - area.x0;
+  alignas(64) float xs[kRegionSize];
+  alignas(64) uint32_t on[kRegionSize];
+  for (int i = 0; i < width; ++i) xs[i] = static_cast<float>(lo + i);
+  uint32_t written = 0;
+  for (int y = area.y0; y < area.y1; ++y) {
+    const float fy = static_cast<float>(y);
+    const size_t rowStart = static_cast<size_t>(y) * static_cast<size_t>(memory.stride) + static_cast<size_t>(lo);
+    // Distinct planes (restrict spares the compiler a run-time overlap check).
+    const float* __restrict term = memory.term + rowStart;
+    float* __restrict depth = memory.depth + rowStart;
+    uint32_t* __restrict values = memory.value + rowStart;
+    // The first edge enables the pixels where it is >= 0; each further edge disables more.
+    for (uint32_t k = 0; k < n; ++k) {
+      const RowTerms r = rowTerms(edges[k], fy);
+      const uint32_t keep = k == 0 ? ~0u : 0u;  // the first edge does not read the flags
+      for (int i = 0; i < width; ++i) {
+        float v = r.a * xs[i];
+        if constexpr (kQuadratic) v = v + r.d * (xs[i] * xs[i]);
+        v = (v + r.c) + r.t * term[i];
+        on[i] = ((on[i] | keep) & (v >= 0 ? ~0u : 0u));
+      }
+    }
+    // Depth: enabled pixels where the primitive is nearer take its depth and value.
+    const RowTerms d = rowTerms(primitive.depth, fy);
+    for (int i = 0; i < width; ++i) {
+      float w = d.a * xs[i];
+      if constexpr (kQuadratic) w = w + d.d * (xs[i] * xs[i]);
+      w = (w + d.c) + d.t * term[i];
+      // Selects by bit masks: written as "wins ? w : depth[i]" the compiler turns the store
+      // into a branch and gives up vectorising.
+      const uint32_t wins = on[i] & (w > depth[i] ? ~0u : 0u);
+      depth[i] = std::bit_cast<float>((std::bit_cast<uint32_t>(w) & wins) | (std::bit_cast<uint32_t>(depth[i]) & ~wins));
+      values[i] = (value & wins) | (values[i] & ~wins);
+      written += wins & 1u;
+    }
+  }
+  stats.pixelOps += static_cast<uint64_t>(width) * static_cast<uint64_t>(area.y1 - area.y0) * (n + 1);
+  stats.written += written;
+}
+
+}  // namespace
+
+void evaluateReference(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+                       EvaluatorStats& stats) {
+  for (int y = area.y0; y < area.y1; ++y) {
+    for (int x = area.x0; x < area.x1; ++x) {
+      const size_t at = static_cast<size_t>(y) * static_cast<size_t>(memory.stride) + static_cast<size_t>(x);
+      const float fx = static_cast<float>(x), fy = static_cast<float>(y), term = memory.term[at];
+      bool on = true;
+      for (uint32_t k = 0; k < primitive.edgeCount; ++k) on = on && evaluate(edges[k], fx, fy, term) >= 0;
+      const float w = evaluate(primitive.depth, fx, fy, term);
+      if (on && w > memory.depth[at]) {
+        memory.depth[at] = w;
+        memory.value[at] = primitive.value;
+        ++stats.written;
+      }
+    }
+  }
+  stats.pixelOps += static_cast<uint64_t>(area.x1 - area.x0) * static_cast<uint64_t>(area.y1 - area.y0) * (primitive.edgeCount + 1);
+}
+
+void evaluateVector(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+                    EvaluatorStats& stats) {
+  if (primitive.quadratic)
+    evaluateRows<true>(primitive, edges, area, memory, stats);
+  else
+    evaluateRows<false>(primitive, edges, area, memory, stats);
+}
+
+}  // namespace pxpl5

@@ -1,0 +1,30 @@
+// A renderer's pixel processors running one primitive's instruction stream over one region:
+// enable the pixels of the primitive's bounds, disable those where an edge expression is
+// negative, then depth-test and write the survivors. Two evaluators give the same bits: a
+// plain per-pixel reference and one the compiler vectorises. Internal to pxpl5.
+#pragma once
+
+#include "pxpl5/batch.h"
+
+namespace pxpl5 {
+
+// A region's pixel memory, seen through the screen planes.
+struct PixelMemory {
+  float* depth = nullptr;
+  uint32_t* value = nullptr;
+  const float* term = nullptr;
+  int stride = 0;
+};
+
+struct EvaluatorStats {
+  uint64_t pixelOps = 0;  // pixel-instruction evaluations done
+  uint64_t written = 0;   // pixels that took the primitive's depth and value
+};
+
+// `area` is the primitive's bounds within the region; `edges` its edge expressions.
+void evaluateReference(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+                       EvaluatorStats& stats);
+void evaluateVector(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+                    EvaluatorStats& stats);
+
+}  // namespace pxpl5

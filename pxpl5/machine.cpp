@@ -1,0 +1,190 @@
+// The machine: pixel memory, the two phases of a frame, the ring's bookkeeping.
+//
+// Sections: Emitter (a graphics processor's output and binning) | Machine state | renderFrame.
+#include "pxpl5/batch.h"
+#include "pxpl5/evaluator.h"
+#include "pxpl5/worker_pool.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace pxpl5 {
+
+// ---- Emitter ------------------------------------------------------------------------------
+
+bool Emitter::convex(PixelRect bounds, std::span<const Expression> edges, const Expression& depth, uint32_t value) {
+  if (edges.empty() || edges.size() > kMaxEdges) throw std::invalid_argument("pxpl5: a primitive needs 1 to 32 edges");
+  const Screen& screen = *batch_->screen;
+  bounds = {std::max(bounds.x0, 0), std::max(bounds.y0, 0), std::min(bounds.x1, screen.width), std::min(bounds.y1, screen.height)};
+  if (bounds.empty()) return false;
+  Batch& batch = *batch_;
+  const auto index = static_cast<uint32_t>(batch.primitives.size());
+  bool quadratic = depth.quadratic();
+  for (const Expression& e : edges) quadratic = quadratic || e.quadratic();
+  batch.primitives.push_back({bounds, static_cast<uint32_t>(batch.edges.size()), static_cast<uint32_t>(edges.size()), depth, value, quadratic});
+  batch.edges.insert(batch.edges.end(), edges.begin(), edges.end());
+  // Sort to the regions the bounds touch (the graphics processor's bucket sort).
+  for (int ry = bounds.y0 / kRegionSize; ry <= (bounds.y1 - 1) / kRegionSize; ++ry)
+    for (int rx = bounds.x0 / kRegionSize; rx <= (bounds.x1 - 1) / kRegionSize; ++rx)
+      batch.pairs.emplace_back(static_cast<uint32_t>(ry * screen.regionsX + rx), index);
+  return true;
+}
+
+// ---- Machine state -----------------------------------------------------------------------
+
+namespace {
+
+// Bytes of one instruction stream in the emulator's encoding (README): a 16-byte header (bounds
+// as four 16-bit coordinates, value, edge count and flags) and each expression's non-zero
+// coefficient set (linear with term: 4 floats; quadratic: 7).
+uint64_t streamBytes(const SetupPrimitive& p) {
+  return 16 + (p.edgeCount + 1) * (p.quadratic ? 28u : 16u);
+}
+
+}  // namespace
+
+struct Machine::State {
+  MachineSettings settings;
+  Screen screen;
+  WorkerPool pool;
+  std::vector<float> term, clearDepth, depth;
+  std::vector<uint32_t> value;
+  std::vector<Emitter::Batch> batches;
+  std::vector<int> regionOrder;
+  std::vector<uint64_t> regionWork;  // bounding-box pixels per region, to hand out the busiest first
+  FrameCounters counters;
+
+  explicit State(const MachineSettings& s) : settings(s), pool(s.graphicsProcessors) {}
+};
+
+Machine::Machine(const MachineSettings& settings) {
+  if (settings.width <= 0 || settings.height <= 0 || settings.graphicsProcessors < 1)
+    throw std::invalid_argument("pxpl5: the screen needs a positive size and at least one graphics processor");
+  state_ = std::make_unique<State>(settings);
+  Screen& s = state_->screen;
+  s.width = settings.width;
+  s.height = settings.height;
+  s.regionsX = (settings.width + kRegionSize - 1) / kRegionSize;
+  s.regionsY = (settings.height + kRegionSize - 1) / kRegionSize;
+  s.stride = s.regionsX * kRegionSize;
+  const size_t pixels = static_cast<size_t>(s.stride) * static_cast<size_t>(s.height);
+  state_->term.assign(pixels, 0.0f);
+  state_->clearDepth.assign(pixels, 0.0f);
+  state_->depth.assign(pixels, 0.0f);
+  state_->value.assign(pixels, kNoValue);
+  for (int y = 0; y < s.height; ++y)
+    for (int x = s.width; x < s.stride; ++x)
+      state_->clearDepth[static_cast<size_t>(y) * static_cast<size_t>(s.stride) + static_cast<size_t>(x)] = std::numeric_limits<float>::infinity();
+  state_->counters.graphicsProcessors.resize(static_cast<size_t>(settings.graphicsProcessors));
+  state_->counters.renderers.resize(static_cast<size_t>(settings.graphicsProcessors));
+}
+
+Machine::~Machine() = default;
+
+const MachineSettings& Machine::settings() const { return state_->settings; }
+int Machine::pixelStride() const { return state_->screen.stride; }
+std::span<float> Machine::termPlane() { return state_->term; }
+std::span<float> Machine::clearDepthPlane() { return state_->clearDepth; }
+std::span<const float> Machine::depthPlane() const { return state_->depth; }
+std::span<const uint32_t> Machine::valuePlane() const { return state_->value; }
+const FrameCounters& Machine::counters() const { return state_->counters; }
+
+// ---- renderFrame ---------------------------------------------------------------------------
+
+void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize) {
+  State& st = *state_;
+  const Screen& screen = st.screen;
+  FrameCounters& counters = st.counters;
+  for (ProcessorLoad& load : counters.graphicsProcessors) load = {};
+  for (ProcessorLoad& load : counters.renderers) load = {};
+
+  // Graphics processors: set up and bin each batch of the caller's primitives.
+  batchSize = std::max<size_t>(batchSize, 1);
+  const size_t batchCount = (primitiveCount + batchSize - 1) / batchSize;
+  if (st.batches.size() < batchCount) st.batches.resize(batchCount);
+  st.pool.run(batchCount, [&](size_t b, int worker) {
+    Emitter::Batch& batch = st.batches[b];
+    batch.screen = &screen;
+    batch.clear();
+    Emitter emitter;
+    emitter.batch_ = &batch;
+    const size_t begin = b * batchSize, end = std::min(begin + batchSize, primitiveCount);
+    setup(begin, end, emitter);
+    batch.groupByRegion();
+    ProcessorLoad& load = counters.graphicsProcessors[static_cast<size_t>(worker)];
+    ++load.tasks;
+    load.primitives += end - begin;
+  });
+
+  // The ring: every (primitive, region) pair is one instruction stream to a renderer.
+  counters.primitivesIn = primitiveCount;
+  counters.primitivesOut = counters.regionPrimitives = counters.instructions = counters.ringBytes = 0;
+  const int regions = screen.regionCount();
+  std::vector<uint64_t>& regionWork = st.regionWork;
+  regionWork.assign(static_cast<size_t>(regions), 0);
+  for (size_t b = 0; b < batchCount; ++b) {
+    const Emitter::Batch& batch = st.batches[b];
+    counters.primitivesOut += batch.primitives.size();
+    for (int r = 0; r < regions; ++r) {
+      for (uint32_t i = batch.binStart[static_cast<size_t>(r)]; i < batch.binStart[static_cast<size_t>(r) + 1]; ++i) {
+        const SetupPrimitive& p = batch.primitives[batch.binned[i]];
+        counters.instructions += p.edgeCount + 2;  // enable bounds, edges, depth test and write
+        counters.ringBytes += streamBytes(p);
+        const PixelRect& bb = p.bounds;
+        regionWork[static_cast<size_t>(r)] += static_cast<uint64_t>(bb.x1 - bb.x0) * static_cast<uint64_t>(bb.y1 - bb.y0);
+      }
+      counters.regionPrimitives += batch.binStart[static_cast<size_t>(r) + 1] - batch.binStart[static_cast<size_t>(r)];
+    }
+  }
+  counters.ringMessages = counters.regionPrimitives;
+  counters.machinePixelOps = counters.instructions * kRegionSize * kRegionSize;
+
+  // Renderers take regions as they come free, the busiest first so that none is left to
+  // finish alone; each clears its region and runs the streams in the caller's order.
+  st.regionOrder.resize(static_cast<size_t>(regions));
+  std::iota(st.regionOrder.begin(), st.regionOrder.end(), 0);
+  std::stable_sort(st.regionOrder.begin(), st.regionOrder.end(),
+                   [&](int a, int b) { return regionWork[static_cast<size_t>(a)] > regionWork[static_cast<size_t>(b)]; });
+  const PixelMemory memory{st.depth.data(), st.value.data(), st.term.data(), screen.stride};
+  const bool reference = st.settings.evaluator == Evaluator::kScalarReference;
+  std::vector<EvaluatorStats> stats(st.counters.renderers.size());
+  st.pool.run(static_cast<size_t>(regions), [&](size_t task, int worker) {
+    const int r = st.regionOrder[task];
+    const PixelRect region = screen.region(r);
+    for (int y = region.y0; y < region.y1; ++y) {
+      const size_t row = static_cast<size_t>(y) * static_cast<size_t>(screen.stride) + static_cast<size_t>(region.x0);
+      const size_t n = static_cast<size_t>(region.x1 - region.x0);
+      std::memcpy(&st.depth[row], &st.clearDepth[row], n * sizeof(float));
+      std::fill_n(&st.value[row], n, kNoValue);
+    }
+    ProcessorLoad& load = counters.renderers[static_cast<size_t>(worker)];
+    EvaluatorStats& s = stats[static_cast<size_t>(worker)];
+    ++load.tasks;
+    const uint64_t opsBefore = s.pixelOps;
+    for (size_t b = 0; b < batchCount; ++b) {
+      const Emitter::Batch& batch = st.batches[b];
+      for (uint32_t i = batch.binStart[static_cast<size_t>(r)]; i < batch.binStart[static_cast<size_t>(r) + 1]; ++i) {
+        const SetupPrimitive& p = batch.primitives[batch.binned[i]];
+        const PixelRect area{std::max(p.bounds.x0, region.x0), std::max(p.bounds.y0, region.y0), std::min(p.bounds.x1, region.x1),
+                             std::min(p.bounds.y1, region.y1)};
+        const Expression* edges = batch.edges.data() + p.firstEdge;
+        if (reference)
+          evaluateReference(p, edges, area, memory, s);
+        else
+          evaluateVector(p, edges, area, memory, s);
+        ++load.primitives;
+      }
+    }
+    load.pixelOps += s.pixelOps - opsBefore;
+  });
+  counters.emulatedPixelOps = counters.pixelsWritten = 0;
+  for (const EvaluatorStats& s : stats) {
+    counters.emulatedPixelOps += s.pixelOps;
+    counters.pixelsWritten += s.written;
+  }
+}
+
+}  // namespace pxpl5

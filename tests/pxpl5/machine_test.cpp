@@ -1,0 +1,208 @@
+// The emulated machine on its own: coverage by edge expressions, the quadratic evaluator, depth,
+// the stored term, counters, and the vectorised evaluator against the scalar reference.
+#include "pxpl5/pxpl5.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <limits>
+#include <random>
+
+namespace pxpl5 {
+namespace {
+
+// x >= x0, x < x1 (as x <= x1 - 1), y likewise.
+std::vector<Expression> rectangleEdges(int x0, int y0, int x1, int y1) {
+  return {{1, 0, static_cast<float>(-x0)}, {-1, 0, static_cast<float>(x1 - 1)}, {0, 1, static_cast<float>(-y0)},
+          {0, -1, static_cast<float>(y1 - 1)}};
+}
+
+Expression constantDepth(float w) { return {0, 0, w}; }
+
+size_t countValue(const Machine& machine, uint32_t value) {
+  size_t n = 0;
+  for (uint32_t v : machine.valuePlane()) n += v == value;
+  return n;
+}
+
+TEST(Machine, RectangleCoversItsPixelsAcrossRegions) {
+  Machine machine({300, 200, 1, Evaluator::kVector});
+  EXPECT_EQ(machine.pixelStride(), 384);
+  machine.renderFrame(1, [](size_t, size_t, Emitter& out) {
+    out.convex({0, 0, 300, 200}, rectangleEdges(100, 50, 260, 140), constantDepth(1), 7);
+  });
+  EXPECT_EQ(countValue(machine, 7), 160u * 90u);
+  EXPECT_EQ(machine.valuePlane()[static_cast<size_t>(50 * 384 + 100)], 7u);
+  EXPECT_EQ(machine.valuePlane()[static_cast<size_t>(50 * 384 + 99)], kNoValue);
+  EXPECT_EQ(machine.valuePlane()[static_cast<size_t>(139 * 384 + 259)], 7u);
+  EXPECT_EQ(machine.valuePlane()[static_cast<size_t>(140 * 384 + 259)], kNoValue);
+
+  // Bounds of the whole screen: 3 x 2 regions, one stream each of 4 edges + 2 instructions.
+  const FrameCounters& c = machine.counters();
+  EXPECT_EQ(c.primitivesIn, 1u);
+  EXPECT_EQ(c.primitivesOut, 1u);
+  EXPECT_EQ(c.regionPrimitives, 6u);
+  EXPECT_EQ(c.ringMessages, 6u);
+  EXPECT_EQ(c.instructions, 36u);
+  EXPECT_EQ(c.ringBytes, 6u * (16 + 5 * 16));
+  EXPECT_EQ(c.machinePixelOps, 36u * 128 * 128);
+  EXPECT_EQ(c.emulatedPixelOps, 300u * 200 * 5);
+  EXPECT_EQ(c.pixelsWritten, 160u * 90u);
+}
+
+TEST(Machine, QuadraticExpressionDrawsADisk) {
+  // r^2 - (x - cx)^2 - (y - cy)^2 >= 0, straight from the quadratic evaluator.
+  Machine machine({256, 256, 1, Evaluator::kVector});
+  const float cx = 100.3f, cy = 140.7f, r = 60.0f;
+  const Expression disk{2 * cx, 2 * cy, r * r - cx * cx - cy * cy, -1, 0, -1};
+  machine.renderFrame(1, [&](size_t, size_t, Emitter& out) {
+    out.convex({0, 0, 256, 256}, std::span(&disk, 1), constantDepth(1), 3);
+  });
+  const size_t inside = countValue(machine, 3);
+  EXPECT_NEAR(static_cast<double>(inside), std::numbers::pi * r * r, 2 * std::numbers::pi * r);
+  size_t expected = 0;
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x) {
+      const double dx = x - static_cast<double>(cx), dy = y - static_cast<double>(cy);
+      expected += dx * dx + dy * dy <= static_cast<double>(r) * r - 0.01;
+    }
+  EXPECT_NEAR(static_cast<double>(inside), static_cast<double>(expected), 4.0);  // float rounding on the rim only
+}
+
+TEST(Machine, NearerWinsAndTiesKeepTheFirst) {
+  Machine machine({128, 128, 1, Evaluator::kVector});
+  machine.renderFrame(3, [](size_t begin, size_t end, Emitter& out) {
+    for (size_t i = begin; i < end; ++i) {
+      if (i == 0) out.convex({0, 0, 128, 128}, rectangleEdges(0, 0, 64, 128), constantDepth(1), 10);    // far, left
+      if (i == 1) out.convex({0, 0, 128, 128}, rectangleEdges(32, 0, 128, 128), constantDepth(2), 11);  // near, right
+      if (i == 2) out.convex({0, 0, 128, 128}, rectangleEdges(0, 0, 128, 64), constantDepth(2), 12);    // ties with 11
+    }
+  });
+  const auto at = [&](int x, int y) { return machine.valuePlane()[static_cast<size_t>(y * 128 + x)]; };
+  EXPECT_EQ(at(10, 100), 10u);
+  EXPECT_EQ(at(40, 100), 11u);
+  EXPECT_EQ(at(40, 10), 11u);  // the tie keeps the earlier primitive
+  EXPECT_EQ(at(10, 10), 12u);
+  EXPECT_EQ(machine.depthPlane()[static_cast<size_t>(100 * 128 + 40)], 2.0f);
+}
+
+TEST(Machine, StoredTermAndPermanentlyDisabledPixels) {
+  Machine machine({128, 128, 1, Evaluator::kVector});
+  // Term = 1 on the left half; "term - 0.5 >= 0" selects it. Row 5 is never written.
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x) {
+      machine.termPlane()[static_cast<size_t>(y * 128 + x)] = x < 64 ? 1.0f : 0.0f;
+      machine.clearDepthPlane()[static_cast<size_t>(y * 128 + x)] = y == 5 ? std::numeric_limits<float>::infinity() : 0.0f;
+    }
+  const Expression left{0, 0, -0.5f, 0, 0, 0, 1};
+  machine.renderFrame(1, [&](size_t, size_t, Emitter& out) { out.convex({0, 0, 128, 128}, std::span(&left, 1), constantDepth(1), 1); });
+  EXPECT_EQ(countValue(machine, 1), 64u * 127u);
+  EXPECT_EQ(machine.valuePlane()[static_cast<size_t>(5 * 128 + 3)], kNoValue);
+  EXPECT_EQ(machine.valuePlane()[static_cast<size_t>(6 * 128 + 3)], 1u);
+}
+
+TEST(Machine, RejectsPrimitivesWithoutEdgesOrWithTooMany) {
+  Machine machine({128, 128, 1, Evaluator::kVector});
+  const std::vector<Expression> many(33, Expression{0, 0, 1});
+  EXPECT_THROW(machine.renderFrame(1, [&](size_t, size_t, Emitter& out) { out.convex({0, 0, 8, 8}, {}, constantDepth(1), 1); }),
+               std::invalid_argument);
+  EXPECT_THROW(machine.renderFrame(1, [&](size_t, size_t, Emitter& out) { out.convex({0, 0, 8, 8}, many, constantDepth(1), 1); }),
+               std::invalid_argument);
+  EXPECT_THROW(Machine({0, 128, 1, Evaluator::kVector}), std::invalid_argument);
+}
+
+// Random triangles and conics with random depth planes over a random term plane.
+struct RandomFrame {
+  std::vector<PixelRect> bounds;
+  std::vector<std::vector<Expression>> edges;
+  std::vector<Expression> depth;
+
+  explicit RandomFrame(uint32_t seed, int width, int height, int count) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> u(0, 1);
+    for (int i = 0; i < count; ++i) {
+      const float cx = u(random) * static_cast<float>(width), cy = u(random) * static_cast<float>(height);
+      const float size = 2 + 60 * u(random) * u(random);
+      std::vector<Expression> e;
+      if (i % 5 == 0) {  // a disk
+        e.push_back({2 * cx, 2 * cy, size * size - cx * cx - cy * cy, -1, 0, -1});
+      } else {  // a triangle (counter-clockwise in x right, y down is clockwise; orient by area)
+        float px[3], py[3];
+        for (int k = 0; k < 3; ++k) px[k] = cx + size * (u(random) - 0.5f) * 2, py[k] = cy + size * (u(random) - 0.5f) * 2;
+        const float area = (px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]);
+        const float s = area >= 0 ? 1.0f : -1.0f;
+        for (int k = 0; k < 3; ++k) {
+          const int l = (k + 1) % 3;
+          const float a = -(py[l] - py[k]) * s, b = (px[l] - px[k]) * s;
+          e.push_back({a, b, -(a * px[k] + b * py[k]), 0, 0, 0, u(random) - 0.5f});
+        }
+      }
+      edges.push_back(e);
+      bounds.push_back({static_cast<int>(cx - size) - 1, static_cast<int>(cy - size) - 1, static_cast<int>(cx + size) + 2,
+                        static_cast<int>(cy + size) + 2});
+      depth.push_back({(u(random) - 0.5f) * 0.01f, (u(random) - 0.5f) * 0.01f, 1 + u(random), 0, 0, 0, u(random)});
+    }
+  }
+  SetupProgram program() const {
+    return [this](size_t begin, size_t end, Emitter& out) {
+      for (size_t i = begin; i < end; ++i) out.convex(bounds[i], edges[i], depth[i], static_cast<uint32_t>(i));
+    };
+  }
+};
+
+void loadRandomTerm(Machine& machine, uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> u(0, 1);
+  for (float& t : machine.termPlane()) t = u(random);
+}
+
+TEST(Machine, VectorEvaluatorMatchesTheScalarReferenceBitForBit) {
+  for (uint32_t seed = 1; seed <= 4; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const RandomFrame frame(seed, 333, 260, 600);
+    Machine vector({333, 260, 1, Evaluator::kVector}), reference({333, 260, 1, Evaluator::kScalarReference});
+    loadRandomTerm(vector, seed);
+    loadRandomTerm(reference, seed);
+    vector.renderFrame(frame.bounds.size(), frame.program(), 64);
+    reference.renderFrame(frame.bounds.size(), frame.program(), 64);
+    ASSERT_TRUE(std::equal(vector.valuePlane().begin(), vector.valuePlane().end(), reference.valuePlane().begin()));
+    ASSERT_TRUE(std::equal(vector.depthPlane().begin(), vector.depthPlane().end(), reference.depthPlane().begin()));
+    EXPECT_EQ(vector.counters().pixelsWritten, reference.counters().pixelsWritten);
+    EXPECT_GT(vector.counters().pixelsWritten, 10000u);
+    EXPECT_EQ(vector.counters().emulatedPixelOps, reference.counters().emulatedPixelOps);
+  }
+}
+
+TEST(Machine, SameFrameForAnyNumberOfGraphicsProcessors) {
+  const RandomFrame frame(9, 512, 512, 3000);
+  Machine one({512, 512, 1, Evaluator::kVector});
+  one.renderFrame(frame.bounds.size(), frame.program(), 100);
+  for (int threads : {2, 8}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    Machine many({512, 512, threads, Evaluator::kVector});
+    for (int repeat = 0; repeat < 3; ++repeat) {  // the same machine, frame after frame
+      many.renderFrame(frame.bounds.size(), frame.program(), 100);
+      ASSERT_TRUE(std::equal(one.valuePlane().begin(), one.valuePlane().end(), many.valuePlane().begin()));
+      ASSERT_TRUE(std::equal(one.depthPlane().begin(), one.depthPlane().end(), many.depthPlane().begin()));
+      const FrameCounters& a = one.counters();
+      const FrameCounters& b = many.counters();
+      EXPECT_EQ(a.instructions, b.instructions);
+      EXPECT_EQ(a.ringBytes, b.ringBytes);
+      EXPECT_EQ(a.emulatedPixelOps, b.emulatedPixelOps);
+      EXPECT_EQ(a.pixelsWritten, b.pixelsWritten);
+      // The processors' loads add up to the totals.
+      ASSERT_EQ(b.graphicsProcessors.size(), static_cast<size_t>(threads));
+      uint64_t in = 0, rendered = 0, ops = 0, regions = 0;
+      for (const ProcessorLoad& l : b.graphicsProcessors) in += l.primitives;
+      for (const ProcessorLoad& l : b.renderers) rendered += l.primitives, ops += l.pixelOps, regions += l.tasks;
+      EXPECT_EQ(in, b.primitivesIn);
+      EXPECT_EQ(rendered, b.regionPrimitives);
+      EXPECT_EQ(ops, b.emulatedPixelOps);
+      EXPECT_EQ(regions, 16u);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pxpl5
