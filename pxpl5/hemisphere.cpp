@@ -1,0 +1,194 @@
+// The form-factor service: validates the polygons, runs one machine frame with the chosen
+// projection's setup program and sums each id's pixel weights.
+//
+// Sections: local frame and clipping | HemisphereRenderer.
+#include "pxpl5/projections.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace pxpl5 {
+
+// ---- local frame and clipping ------------------------------------------------------------
+
+LocalFrame localFrame(const Viewpoint& view) {
+  LocalFrame f;
+  f.origin = glm::dvec3(view.point);
+  f.z = glm::normalize(glm::dvec3(view.normal));
+  // Duff et al. (2017), "Building an orthonormal basis, revisited": no branch on a near axis.
+  const double sign = std::copysign(1.0, f.z.z);
+  const double a = -1.0 / (sign + f.z.z), b = f.z.x * f.z.y * a;
+  f.x = {1.0 + sign * f.z.x * f.z.x * a, sign * b, -sign * f.z.x};
+  f.y = {b, sign + f.z.y * f.z.y * a, -f.z.y};
+  return f;
+}
+
+int clipToHalfSpace(const glm::dvec3* in, int n, const glm::dvec3& k, glm::dvec3* out) {
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec3& a = in[i];
+    const glm::dvec3& b = in[(i + 1) % n];
+    const double da = glm::dot(k, a), db = glm::dot(k, b);
+    if (da >= 0) out[m++] = a;
+    if ((da >= 0) != (db >= 0)) {
+      const glm::dvec3& inside = da >= 0 ? a : b;
+      const glm::dvec3& outside = da >= 0 ? b : a;
+      const double di = std::max(da, db), dOut = std::min(da, db);
+      out[m++] = inside + (di / (di - dOut)) * (outside - inside);
+    }
+  }
+  return m;
+}
+
+int localPolygon(const ProjectionInput& in, size_t index, glm::dvec3* v, glm::dvec3& normal, double& offset) {
+  const Polygon& polygon = in.soup->polygons[index];
+  for (uint32_t skip : in.skipIds)
+    if (skip == polygon.id) return 0;
+  const int n = static_cast<int>(polygon.vertexCount);
+  double extent = 0;
+  for (int k = 0; k < n; ++k) v[k] = in.frame.localFromWorld(in.soup->vertices[polygon.firstVertex + static_cast<uint32_t>(k)]);
+  // Newell's normal, robust for any planar winding; its length is twice the area.
+  normal = glm::dvec3(0.0);
+  glm::dvec3 centre(0.0);
+  for (int k = 0; k < n; ++k) {
+    const glm::dvec3& a = v[k];
+    const glm::dvec3& b = v[(k + 1) % n];
+    normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    centre += a;
+    extent = std::max(extent, glm::length(b - v[0]));
+  }
+  offset = glm::dot(normal, centre / static_cast<double>(n));
+  // The point's own plane (or a degenerate polygon): seen edge-on, it covers nothing.
+  const double length = glm::length(normal);
+  if (!(length > 0) || std::abs(offset) <= 1e-6 * length * extent) return 0;
+  return n;
+}
+
+void screenSize(Projection projection, int resolution, int& width, int& height) {
+  width = resolution;
+  height = projection == Projection::kHemisphere ? resolution : 3 * resolution;
+}
+
+// ---- HemisphereRenderer ------------------------------------------------------------------
+
+struct HemisphereRenderer::State {
+  HemisphereSettings settings;
+  Machine machine;
+  std::vector<float> weights;
+  std::vector<double> sums;  // per polygon index; kept at zero between frames
+  double diskShare = 0;      // the weight of every disk pixel (hemisphere projection)
+  HemisphereFrame frame;
+
+  State(const HemisphereSettings& s, const MachineSettings& m) : settings(s), machine(m) {}
+};
+
+namespace {
+
+MachineSettings machineSettings(const HemisphereSettings& s) {
+  if (s.resolution < 8 || s.resolution % 2 != 0) throw std::invalid_argument("pxpl5: the resolution must be even and at least 8");
+  MachineSettings m;
+  screenSize(s.projection, s.resolution, m.width, m.height);
+  m.graphicsProcessors = s.graphicsProcessors;
+  m.evaluator = s.evaluator;
+  return m;
+}
+
+void validate(const PolygonSoup& soup) {
+  for (size_t i = 0; i < soup.polygons.size(); ++i) {
+    const Polygon& p = soup.polygons[i];
+    if (p.vertexCount < 3 || p.vertexCount > kMaxPolygonVertices)
+      throw std::invalid_argument("pxpl5: polygon " + std::to_string(i) + " has " + std::to_string(p.vertexCount) + " vertices (3 to 24 allowed)");
+    if (p.firstVertex > soup.vertices.size() || p.vertexCount > soup.vertices.size() - p.firstVertex)
+      throw std::invalid_argument("pxpl5: polygon " + std::to_string(i) + " uses vertices past the end of the vertex array");
+  }
+}
+
+}  // namespace
+
+HemisphereRenderer::HemisphereRenderer(const HemisphereSettings& settings)
+    : state_(std::make_unique<State>(settings, machineSettings(settings))) {
+  State& st = *state_;
+  if (settings.projection == Projection::kHemisphere)
+    loadHemispherePlanes(st.machine, settings.resolution, st.weights);
+  else
+    loadHemicubePlanes(st.machine, settings.resolution, st.weights);
+  st.frame.weights = st.weights;
+  // In double: 1 / (pixels of the disk), so that a closed scene sums to 1 to rounding.
+  st.diskShare = 1.0 / static_cast<double>(std::count_if(st.weights.begin(), st.weights.end(), [](float w) { return w > 0; }));
+  st.frame.width = st.machine.settings().width;
+  st.frame.height = st.machine.settings().height;
+  st.frame.stride = st.machine.pixelStride();
+}
+
+HemisphereRenderer::~HemisphereRenderer() = default;
+
+const HemisphereSettings& HemisphereRenderer::settings() const { return state_->settings; }
+const FrameCounters& HemisphereRenderer::counters() const { return state_->machine.counters(); }
+
+const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const PolygonSoup& soup) {
+  State& st = *state_;
+  validate(soup);
+  if (!(glm::length(view.normal) > 0)) throw std::invalid_argument("pxpl5: the viewpoint's normal is zero");
+
+  // One machine frame.
+  ProjectionInput input{&soup, localFrame(view), view.skipIds, st.settings.resolution};
+  const bool hemisphere = st.settings.projection == Projection::kHemisphere;
+  st.machine.renderFrame(soup.polygons.size(), [&](size_t begin, size_t end, Emitter& out) {
+    if (hemisphere)
+      setupHemisphere(input, begin, end, out);
+    else
+      setupHemicube(input, begin, end, out);
+  });
+
+  // Sum the weights of each polygon's pixels, a run of equal items at a time. The disk's
+  // weights are all equal, so there a run adds its length (exact) and the weight comes last.
+  HemisphereFrame& frame = st.frame;
+  frame.items = st.machine.valuePlane();
+  if (st.sums.size() < soup.polygons.size()) st.sums.resize(soup.polygons.size(), 0.0);
+  const size_t stride = static_cast<size_t>(frame.stride);
+  for (int y = 0; y < frame.height; ++y) {
+    const uint32_t* items = frame.items.data() + static_cast<size_t>(y) * stride;
+    const float* weights = st.weights.data() + static_cast<size_t>(y) * stride;
+    for (int x = 0; x < frame.width;) {
+      const uint32_t item = items[x];
+      int runEnd = x + 1;
+      while (runEnd < frame.width && items[runEnd] == item) ++runEnd;
+      if (item != kNoValue) {
+        if (hemisphere) {
+          st.sums[item] += runEnd - x;
+        } else {
+          double sum = 0;
+          for (int k = x; k < runEnd; ++k) sum += weights[k];
+          st.sums[item] += sum;
+        }
+      }
+      x = runEnd;
+    }
+  }
+
+  // Per id, ascending; ids usually come ascending already, then no sort is needed.
+  frame.factors.clear();
+  const double scale = hemisphere ? st.diskShare : 1.0;
+  for (size_t i = 0; i < soup.polygons.size(); ++i) {
+    if (st.sums[i] == 0) continue;
+    frame.factors.push_back({soup.polygons[i].id, st.sums[i] * scale});
+    st.sums[i] = 0;
+  }
+  const auto byId = [](const IdFactor& a, const IdFactor& b) { return a.id < b.id; };
+  if (!std::is_sorted(frame.factors.begin(), frame.factors.end(), byId)) std::stable_sort(frame.factors.begin(), frame.factors.end(), byId);
+  size_t kept = 0;
+  for (size_t i = 0; i < frame.factors.size(); ++i) {
+    if (kept > 0 && frame.factors[kept - 1].id == frame.factors[i].id)
+      frame.factors[kept - 1].factor += frame.factors[i].factor;
+    else
+      frame.factors[kept++] = frame.factors[i];
+  }
+  frame.factors.resize(kept);
+  frame.total = 0;
+  for (const IdFactor& f : frame.factors) frame.total += f.factor;
+  return frame;
+}
+
+}  // namespace pxpl5
