@@ -47,22 +47,24 @@ int localPolygon(const ProjectionInput& in, size_t index, glm::dvec3* v, glm::dv
   for (uint32_t skip : in.skipIds)
     if (skip == polygon.id) return 0;
   const int n = static_cast<int>(polygon.vertexCount);
-  double extent = 0;
   for (int k = 0; k < n; ++k) v[k] = in.frame.localFromWorld(in.soup->vertices[polygon.firstVertex + static_cast<uint32_t>(k)]);
   // Newell's normal, robust for any planar winding; its length is twice the area.
   normal = glm::dvec3(0.0);
   glm::dvec3 centre(0.0);
+  double extent2 = 0;
   for (int k = 0; k < n; ++k) {
     const glm::dvec3& a = v[k];
     const glm::dvec3& b = v[(k + 1) % n];
     normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
     centre += a;
-    extent = std::max(extent, glm::length(b - v[0]));
+    const glm::dvec3 e = b - v[0];
+    extent2 = std::max(extent2, glm::dot(e, e));
   }
   offset = glm::dot(normal, centre / static_cast<double>(n));
-  // The point's own plane (or a degenerate polygon): seen edge-on, it covers nothing.
-  const double length = glm::length(normal);
-  if (!(length > 0) || std::abs(offset) <= 1e-6 * length * extent) return 0;
+  // The point's own plane (or a degenerate polygon): seen edge-on, it covers nothing. The plane's
+  // distance |offset| / |normal| against 1e-6 of the polygon's size, squared.
+  const double normal2 = glm::dot(normal, normal);
+  if (!(normal2 > 0) || offset * offset <= 1e-12 * normal2 * extent2) return 0;
   return n;
 }
 

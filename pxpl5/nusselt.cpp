@@ -63,23 +63,24 @@ void setupHemisphere(const ProjectionInput& in, size_t begin, size_t end, Emitte
     }
 
     // Directions on the unit sphere; the disk bounds of the projected arcs. An arc from a to b
-    // strays from its chord by at most the sagitta 1 - |a + b| / 2, and the projection does
-    // not lengthen, so the chord's bounds grown by it hold the arc.
+    // strays from its chord by at most the sagitta 1 - cos(angle / 2) <= (1 - a . b) / 2, and
+    // the projection does not lengthen, so the chord's bounds grown by that hold the arc.
     glm::dvec3 u[kMaxPolygonVertices + 1];
-    for (int k = 0; k < n; ++k) u[k] = poly[k] / glm::length(poly[k]);
+    for (int k = 0; k < n; ++k) u[k] = poly[k] * (1.0 / glm::length(poly[k]));
     const double orientation = d > 0 ? 1.0 : -1.0;
     double xLo = 1, xHi = -1, yLo = 1, yHi = -1;
     int edgeCount = 0;
     for (int k = 0; k < n; ++k) {
       const glm::dvec3& a = u[k];
-      const glm::dvec3& b = u[(k + 1) % n];
-      const double sagitta = 1.0 - 0.5 * glm::length(a + b);
+      const glm::dvec3& b = u[k + 1 < n ? k + 1 : 0];
+      const double sagitta = 0.5 * (1.0 - glm::dot(a, b));
       xLo = std::min(xLo, std::min(a.x, b.x) - sagitta), xHi = std::max(xHi, std::max(a.x, b.x) + sagitta);
       yLo = std::min(yLo, std::min(a.y, b.y) - sagitta), yHi = std::max(yHi, std::max(a.y, b.y) + sagitta);
+      // The test n . p >= 0 does not care about n's length, so n is not normalised; a and b
+      // are unit vectors, so |n| is the sine of the edge's angle, well within float range.
       const glm::dvec3 normal = orientation * glm::cross(a, b);
-      const double length = glm::length(normal);
-      if (!(length > 0)) continue;  // a repeated vertex: no edge
-      edges[edgeCount++] = grid.expression(normal / length);
+      if (normal.x == 0 && normal.y == 0 && normal.z == 0) continue;  // a repeated vertex: no edge
+      edges[edgeCount++] = grid.expression(normal);
     }
     if (edgeCount == 0) continue;
 
