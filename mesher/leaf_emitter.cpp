@@ -146,13 +146,13 @@ void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
   if (leaf.templateKey >= 0) {
     const auto key = static_cast<size_t>(leaf.templateKey);
     if (!haveTemplate_[key]) {
-      removeSubdomains(ring_, -1, &inner, built_.frame.planePerTree(), templates_[key]);
+      subdomains_.mesh(ring_, -1, &inner, built_.frame.planePerTree(), templates_[key]);
       haveTemplate_[key] = true;
     }
     elements = &templates_[key];
   } else {
     pieces_.clear();
-    removeSubdomains(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_);
+    subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_);
   }
   const size_t innerIndex = ring_.size();
   uint32_t innerId = Mesh::kNone;

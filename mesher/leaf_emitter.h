@@ -48,6 +48,7 @@ class LeafEmitter {
   LeafRegionBuilder regions_;
   std::vector<Vec2> ring_;  // tree coordinates
   std::vector<uint32_t> ringIds_;
+  SubdomainRemover subdomains_;
   std::vector<RingElement> pieces_;
   // Interior squares differ only in which sides carry a T-vertex: their subdomains (the
   // templates of 5.3) are worked out once per pattern.

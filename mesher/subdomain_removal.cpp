@@ -26,25 +26,6 @@ bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return turnsLeft(a, b, c) && turnsLeft(b, c, d) && turnsLeft(c, d, a) && turnsLeft(d, a, b);
 }
 
-// Greedy merge of consecutive triangles of one fan run.
-void mergeRun(const std::vector<Vec2>& ring, uint32_t hinge, const std::vector<uint32_t>& run,
-              std::vector<RingElement>& out) {
-  size_t i = 0;
-  while (i + 1 < run.size()) {
-    const uint32_t a = run[i], b = run[i + 1];
-    if (i + 2 < run.size()) {
-      const uint32_t c = run[i + 2];
-      if (strictlyConvexQuad(ring[hinge], ring[a], ring[b], ring[c])) {
-        out.push_back({{hinge, a, b, c}, 4});
-        i += 2;
-        continue;
-      }
-    }
-    out.push_back({{hinge, a, b, 0}, 3});
-    i += 1;
-  }
-}
-
 void earClipAndMerge(const std::vector<Vec2>& ring, std::vector<RingElement>& out) {
   const auto triangles = triangulate({ring, {}});
   std::vector<bool> used(triangles.size(), false);
@@ -80,96 +61,111 @@ double angleDeg(Vec2 prev, Vec2 at, Vec2 next) {
 
 }  // namespace
 
-bool fanFromHinge(const std::vector<Vec2>& ring, size_t hinge, std::vector<RingElement>& out) {
-  const size_t n = ring.size();
+void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge) {
+  const std::vector<uint32_t>& run = run_;
+  size_t i = 0;
+  while (i + 1 < run.size()) {
+    const uint32_t a = run[i], b = run[i + 1];
+    if (i + 2 < run.size()) {
+      const uint32_t c = run[i + 2];
+      if (strictlyConvexQuad(points[hinge], points[a], points[b], points[c])) {
+        trial_.push_back({{hinge, a, b, c}, 4});
+        i += 2;
+        continue;
+      }
+    }
+    trial_.push_back({{hinge, a, b, 0}, 3});
+    i += 1;
+  }
+}
+
+bool SubdomainRemover::fanFromHinge(const std::vector<Vec2>& points, size_t ringSize, size_t hinge) {
+  const size_t n = ringSize;
   const auto h = static_cast<uint32_t>(hinge);
-  std::vector<RingElement> elements;
-  std::vector<uint32_t> run;
+  trial_.clear();
+  run_.clear();
   for (size_t k = 1; k < n; ++k) {
     const auto i = static_cast<uint32_t>((hinge + k) % n);
-    if (ring[i] == ring[h]) {  // the region is pinched here: a new run starts
-      mergeRun(ring, h, run, elements);
-      run.clear();
+    if (points[i] == points[h]) {  // the region is pinched here: a new run starts
+      mergeRun(points, h);
+      run_.clear();
       continue;
     }
-    if (!run.empty() && !turnsLeft(ring[run.back()], ring[i], ring[h])) return false;
-    run.push_back(i);
+    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], points[h])) return false;
+    run_.push_back(i);
   }
-  mergeRun(ring, h, run, elements);
-  out.insert(out.end(), elements.begin(), elements.end());
+  mergeRun(points, h);
   return true;
 }
 
-bool fanFromInside(const std::vector<Vec2>& points, size_t start, std::vector<RingElement>& out) {
-  const size_t n = points.size() - 1;
+bool SubdomainRemover::fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start) {
+  const size_t n = ringSize;
   const Vec2 inner = points[n];
-  std::vector<uint32_t> run;
-  run.reserve(n + 1);
+  trial_.clear();
+  run_.clear();
   for (size_t k = 0; k <= n; ++k) {
     const auto i = static_cast<uint32_t>((start + k) % n);
-    if (!run.empty() && !turnsLeft(points[run.back()], points[i], inner)) return false;
-    run.push_back(i);
+    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], inner)) return false;
+    run_.push_back(i);
   }
-  mergeRun(points, static_cast<uint32_t>(n), run, out);
+  mergeRun(points, static_cast<uint32_t>(n));
   return true;
 }
 
-void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                      std::vector<RingElement>& out) {
+double SubdomainRemover::score() const {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const RingElement& e : trial_)
+    for (uint8_t k = 0; k < e.count; ++k) {
+      const uint32_t at = e.v[k];
+      if (reach_[at] <= 0) continue;
+      const double angle = angleDeg(shaped_[e.v[(k + e.count - 1) % e.count]], shaped_[at], shaped_[e.v[(k + 1) % e.count]]);
+      worst = std::min(worst, angle / reach_[at]);
+    }
+  return worst;
+}
+
+void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                            std::vector<RingElement>& out) {
   const size_t n = ring.size();
+  points_.assign(ring.begin(), ring.end());
+  if (inner) points_.push_back(*inner);
   // Angles are judged with the ring scaled to its true proportions.
-  std::vector<Vec2> shaped(ring);
-  if (inner) shaped.push_back(*inner);
-  for (Vec2& p : shaped) p *= shapeScale;
+  shaped_.assign(points_.begin(), points_.end());
+  for (Vec2& p : shaped_) p *= shapeScale;
   // What each ring corner's elements can reach: the bound, or the ring's own angle where sharper.
-  std::vector<double> reach(n + 1, kAngleBoundDeg);
+  reach_.assign(n + 1, kAngleBoundDeg);
   for (size_t i = 0; i < n; ++i) {
-    const Vec2 prev = shaped[(i + n - 1) % n], at = shaped[i], next = shaped[(i + 1) % n];
-    if (orient2(prev, at, next) > 0) reach[i] = std::min(kAngleBoundDeg, angleDeg(prev, at, next));
+    const Vec2 prev = shaped_[(i + n - 1) % n], at = shaped_[i], next = shaped_[(i + 1) % n];
+    if (orient2(prev, at, next) > 0) reach_[i] = std::min(kAngleBoundDeg, angleDeg(prev, at, next));
   }
-  // 1 or more when every element angle reaches what it can.
-  auto score = [&](const std::vector<RingElement>& elements) {
-    double worst = std::numeric_limits<double>::infinity();
-    for (const RingElement& e : elements)
-      for (uint8_t k = 0; k < e.count; ++k) {
-        const uint32_t at = e.v[k];
-        if (reach[at] <= 0) continue;
-        const double angle = angleDeg(shaped[e.v[(k + e.count - 1) % e.count]], shaped[at], shaped[e.v[(k + 1) % e.count]]);
-        worst = std::min(worst, angle / reach[at]);
-      }
-    return worst;
-  };
   // Good sets beat the rest; among good ones the fewest elements win, among the rest a clearly
   // better score (or as good a one with fewer elements). The thesis' hinge goes first, so it
-  // wins ties.
-  std::vector<RingElement> best, trial;
+  // wins ties. No fan has fewer elements than the n - 2 triangles of a hinge merged in pairs:
+  // a good set that small ends the search.
+  best_.clear();
   double bestScore = -1;
-  auto better = [&](double s, size_t count) {
-    if (best.empty()) return true;
-    const bool good = s >= 1, bestGood = bestScore >= 1;
-    if (good != bestGood) return good;
-    if (good) return count < best.size() || (count == best.size() && s > bestScore);
-    return s > bestScore + 0.05 || (s > bestScore - 0.05 && count < best.size());
-  };
-  // No fan has fewer elements than the n - 2 triangles of a hinge merged in pairs: a good set
-  // that small ends the search.
   const size_t fewest = (n - 1) / 2;
-  auto done = [&] { return bestScore >= 1 && best.size() <= fewest; };
+  auto done = [&] { return bestScore >= 1 && best_.size() <= fewest; };
   auto consider = [&](bool fanned) {
     if (!fanned) return;
-    const double s = score(trial);
-    if (better(s, trial.size())) best.swap(trial), bestScore = s;
+    const double s = score();
+    const size_t count = trial_.size();
+    bool better = best_.empty();
+    if (!better) {
+      const bool good = s >= 1, bestGood = bestScore >= 1;
+      if (good != bestGood) better = good;
+      else if (good) better = count < best_.size() || (count == best_.size() && s > bestScore);
+      else better = s > bestScore + 0.05 || (s > bestScore - 0.05 && count < best_.size());
+    }
+    if (better) best_.swap(trial_), bestScore = s;
   };
-  if (preferredHinge >= 0) trial.clear(), consider(fanFromHinge(ring, static_cast<size_t>(preferredHinge), trial));
+  if (preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)));
   for (size_t h = 0; h < n && !done(); ++h)
-    if (static_cast<int>(h) != preferredHinge) trial.clear(), consider(fanFromHinge(ring, h, trial));
-  if (inner && !done()) {
-    std::vector<Vec2> around(ring);
-    around.push_back(*inner);
-    for (size_t start = 0; start < n && !done(); ++start) trial.clear(), consider(fanFromInside(around, start, trial));
-  }
-  if (!best.empty()) {
-    out.insert(out.end(), best.begin(), best.end());
+    if (static_cast<int>(h) != preferredHinge) consider(fanFromHinge(points_, n, h));
+  if (inner)
+    for (size_t start = 0; start < n && !done(); ++start) consider(fanFromInside(points_, n, start));
+  if (!best_.empty()) {
+    out.insert(out.end(), best_.begin(), best_.end());
     return;
   }
   earClipAndMerge(ring, out);

@@ -18,26 +18,37 @@ struct RingElement {
   uint8_t count = 0;
 };
 
-// Fans the ring out from ring[hinge], merging neighbouring fan triangles into strictly convex
-// quadrilaterals, first come first served. Returns false, writing nothing, when some fan
-// triangle would have no area (a ring point hidden from the hinge or in line with it and a
-// neighbour): the fan would leave a T-vertex. Points equal to the hinge (a region pinched at
-// its vertex) split the fan.
-bool fanFromHinge(const std::vector<Vec2>& ring, size_t hinge, std::vector<RingElement>& out);
+// Meshes leaf rings by subdomain removal. Among the fans from each hinge and, when `inner` is
+// given (a point inside the ring, index ring.size() in the elements), the fans around it, it
+// takes one whose angles all reach kAngleBoundDeg (or the ring's own corner there, when that is
+// sharper) with the fewest elements; when none does, the one closest to it. `preferredHinge`,
+// the rule of 5.4, wins ties. A ring no point sees whole is ear clipped, triangle pairs merged
+// into convex quads. Shapes are judged on `ring` (tree coordinates, where collinear grid points
+// are exact), angles on the ring scaled by `shapeScale` (plane units per tree unit on each
+// axis). Scratch memory is kept from ring to ring.
+class SubdomainRemover {
+ public:
+  void mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+            std::vector<RingElement>& out);
 
-// Fans the ring out from `points[ring size]`, a point strictly inside that sees every ring edge,
-// starting at ring[start]; `points` is the ring with that point appended. False, writing
-// nothing, when the point does not see some edge.
-bool fanFromInside(const std::vector<Vec2>& points, size_t start, std::vector<RingElement>& out);
+ private:
+  // Fans `points` (a ring, with the inner point appended when there is one) out from
+  // points[hinge], merging neighbouring fan triangles into strictly convex quadrilaterals, first
+  // come first served, into trial_. False when some fan triangle would have no area (a ring
+  // point hidden from the hinge, or in line with it and a neighbour: a T-vertex). Points equal
+  // to the hinge (a region pinched at its vertex) split the fan.
+  bool fanFromHinge(const std::vector<Vec2>& points, size_t ringSize, size_t hinge);
+  // Fans the ring around the inner point points[ringSize], starting at ring[start]; false when
+  // the point does not see some ring edge.
+  bool fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start);
+  void mergeRun(const std::vector<Vec2>& points, uint32_t hinge);
+  // How close trial_ comes to the bound: 1 or more when every angle reaches what it can.
+  double score() const;
 
-// The mesh of a ring: among the fans from each hinge and, when `inner` is given (a point inside
-// the ring, index ring.size() in the elements), the fans around it, one whose angles all reach
-// kAngleBoundDeg (or the ring's own corner there, when that is sharper) with the fewest elements;
-// when none does, the one closest to it. `preferredHinge`, the rule of 5.4, wins ties. A ring
-// no point sees whole is ear clipped, triangle pairs merged into convex quads. Shapes are judged
-// on `ring` (tree coordinates, where collinear grid points are exact), angles on the ring scaled
-// by `shapeScale` (plane units per tree unit on each axis).
-void removeSubdomains(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                      std::vector<RingElement>& out);
+  std::vector<Vec2> points_, shaped_;
+  std::vector<double> reach_;
+  std::vector<uint32_t> run_;
+  std::vector<RingElement> trial_, best_;
+};
 
 }  // namespace mesher
