@@ -119,7 +119,9 @@ class Machine {
 
   // Runs one frame: clears depth and values, runs `setup` over [0, primitiveCount) on the
   // graphics processors (batches of `batchSize` primitives, any number per thread), bins, sends
-  // and renders. Output depends only on the inputs, never on the number of threads.
+  // and renders. Output depends only on the inputs, never on the number of threads. An exception
+  // from the setup program (or the emitter) reaches the caller; that frame's planes and
+  // counters are then unspecified, and the machine stays usable.
   void renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize = 256);
 
   // The last frame's result and counters.

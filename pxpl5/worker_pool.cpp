@@ -1,5 +1,7 @@
 #include "pxpl5/worker_pool.h"
 
+#include <utility>
+
 namespace pxpl5 {
 
 WorkerPool::WorkerPool(int workers) {
@@ -16,7 +18,17 @@ WorkerPool::~WorkerPool() {
 }
 
 void WorkerPool::drain(int worker) {
-  for (size_t task = next_.fetch_add(1); task < taskCount_; task = next_.fetch_add(1)) (*job_)(task, worker);
+  for (size_t task = next_.fetch_add(1); task < taskCount_; task = next_.fetch_add(1)) {
+    try {
+      (*job_)(task, worker);
+    } catch (...) {
+      // An exception must not leave a helper thread (that would terminate the program): keep
+      // it for run() and let the others stop taking tasks.
+      next_.store(taskCount_);
+      std::lock_guard lock(mutex_);
+      if (!failure_) failure_ = std::current_exception();
+    }
+  }
 }
 
 void WorkerPool::work(int worker) {
@@ -44,6 +56,7 @@ void WorkerPool::run(size_t taskCount, const std::function<void(size_t, int)>& j
     job_ = &job;
     taskCount_ = taskCount;
     next_.store(0);
+    failure_ = nullptr;
     busy_ = static_cast<int>(threads_.size());
     ++generation_;
   }
@@ -51,6 +64,7 @@ void WorkerPool::run(size_t taskCount, const std::function<void(size_t, int)>& j
   drain(0);
   std::unique_lock lock(mutex_);
   done_.wait(lock, [&] { return busy_ == 0; });
+  if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
 }
 
 }  // namespace pxpl5

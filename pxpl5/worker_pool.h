@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <exception>
 #include <cstddef>
 #include <functional>
 #include <mutex>
@@ -22,7 +23,8 @@ class WorkerPool {
   int size() const { return static_cast<int>(threads_.size()) + 1; }
 
   // Calls job(task, worker) once for every task in [0, taskCount), tasks taken in increasing
-  // order by whichever worker comes free first; returns when all are done. Not re-entrant.
+  // order by whichever worker comes free first; returns when all are done. If a job throws, the
+  // remaining tasks are skipped and the first exception is rethrown here. Not re-entrant.
   void run(size_t taskCount, const std::function<void(size_t task, int worker)>& job);
 
  private:
@@ -38,6 +40,7 @@ class WorkerPool {
   const std::function<void(size_t, int)>* job_ = nullptr;
   size_t taskCount_ = 0;
   std::atomic<size_t> next_{0};
+  std::exception_ptr failure_;  // the first exception a job threw in this run (under mutex_)
 };
 
 }  // namespace pxpl5

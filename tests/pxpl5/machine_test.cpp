@@ -110,6 +110,15 @@ TEST(Machine, RejectsPrimitivesWithoutEdgesOrWithTooMany) {
   EXPECT_THROW(machine.renderFrame(1, [&](size_t, size_t, Emitter& out) { out.convex({0, 0, 8, 8}, many, constantDepth(1), 1); }),
                std::invalid_argument);
   EXPECT_THROW(Machine({0, 128, 1, Evaluator::kVector}), std::invalid_argument);
+  // On a graphics-processor thread the error reaches the caller too, and the machine still works.
+  Machine threaded({256, 256, 4, Evaluator::kVector});
+  const auto program = [&](size_t begin, size_t, Emitter& out) {
+    if (begin == 300) out.convex({0, 0, 8, 8}, many, constantDepth(1), 1);
+    out.convex({0, 0, 8, 8}, rectangleEdges(0, 0, 4, 4), constantDepth(1), 1);
+  };
+  EXPECT_THROW(threaded.renderFrame(1000, program, 100), std::invalid_argument);
+  threaded.renderFrame(300, program, 100);
+  EXPECT_EQ(countValue(threaded, 1), 16u);
 }
 
 // Random triangles and conics with random depth planes over a random term plane.
