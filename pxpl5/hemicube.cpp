@@ -85,7 +85,7 @@ void setupHemicube(const ProjectionInput& in, size_t begin, size_t end, Emitter&
       int edgeCount = 0;
       for (int k = 0; k < n; ++k) {
         const glm::dvec3& a = f[k];
-        const glm::dvec3& b = f[(k + 1) % n];
+        const glm::dvec3& b = f[k + 1 < n ? k + 1 : 0];
         uLo = std::min(uLo, a.x / a.z), uHi = std::max(uHi, a.x / a.z);
         vLo = std::min(vLo, a.y / a.z), vHi = std::max(vHi, a.y / a.z);
         const glm::dvec3 normal = orientation * glm::cross(a, b);

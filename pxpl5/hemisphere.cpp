@@ -29,7 +29,7 @@ int clipToHalfSpace(const glm::dvec3* in, int n, const glm::dvec3& k, glm::dvec3
   int m = 0;
   for (int i = 0; i < n; ++i) {
     const glm::dvec3& a = in[i];
-    const glm::dvec3& b = in[(i + 1) % n];
+    const glm::dvec3& b = in[i + 1 < n ? i + 1 : 0];
     const double da = glm::dot(k, a), db = glm::dot(k, b);
     if (da >= 0) out[m++] = a;
     if ((da >= 0) != (db >= 0)) {
@@ -54,7 +54,7 @@ int localPolygon(const ProjectionInput& in, size_t index, glm::dvec3* v, glm::dv
   double extent2 = 0;
   for (int k = 0; k < n; ++k) {
     const glm::dvec3& a = v[k];
-    const glm::dvec3& b = v[(k + 1) % n];
+    const glm::dvec3& b = v[k + 1 < n ? k + 1 : 0];
     normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
     centre += a;
     const glm::dvec3 e = b - v[0];

@@ -98,7 +98,9 @@ TEST(Hemisphere, UnoccludedFactorsMatchLambertAndConvergeWithResolution) {
     if (resolution >= 256) {
       EXPECT_LT(mean, 0.005);
     }
-    EXPECT_LT(mean, previousMean * 0.75) << "the error shrinks with resolution";
+    // Boundary pixels grow as N and a polygon's pixels as N^2, so doubling N should at least
+    // about halve the relative error (more where boundary errors cancel).
+    EXPECT_LT(mean, previousMean * 0.6) << "the error shrinks with resolution";
     previousMean = mean;
   }
 }
