@@ -29,11 +29,12 @@ DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambientOut) 
   if (ambientOut) *ambientOut = ambient;
 
   DisplayMesh mesh;
+  mesher::Mesher mesher;
   for (const Surface& s : scene.surfaces) {
     const Material& m = scene.materials[s.material];
     const glm::vec3 radiance{m.emission + m.reflectance * ambient};
 
-    const SurfaceMesh surfaceMesh = meshSurface(s);
+    const SurfaceMesh surfaceMesh = meshSurface(s, mesher);
     const mesher::Mesh& patches = surfaceMesh.mesh;
     const auto first = static_cast<uint32_t>(mesh.positions.size());
     mesh.surfaceVertexStart.push_back(first);

@@ -41,21 +41,30 @@ PlaneFrame planeFrame(const Surface& s) {
 mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf) {
   const PlaneFrame frame = planeFrame(frameOf);
   mesher::PolygonWithHoles polygon;
+  polygon.outer.reserve(surface.outer.size());
   for (const Vec3& p : surface.outer) polygon.outer.push_back(frame.project(p));
+  polygon.holes.reserve(surface.holes.size());
   for (const Ring3& hole : surface.holes) {
     mesher::Ring2& ring = polygon.holes.emplace_back();
+    ring.reserve(hole.size());
     for (const Vec3& p : hole) ring.push_back(frame.project(p));
   }
   return polygon;
 }
 
 SurfaceMesh meshSurface(const Surface& surface) {
+  mesher::Mesher mesher;
+  return meshSurface(surface, mesher);
+}
+
+SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher) {
   const PlaneFrame frame = planeFrame(surface);
   SurfaceMesh result;
   result.polygon = planePolygon(surface, surface);
-  result.mesh = mesher::meshPolygon(result.polygon, {surface.patchSize});
+  result.mesh = mesher.mesh(result.polygon, {surface.patchSize});
 
   // The surface's own points come first in the mesh, in the same order: keep them exact.
+  result.positions.reserve(result.mesh.vertices.size());
   result.positions = surface.outer;
   for (const Ring3& hole : surface.holes) result.positions.insert(result.positions.end(), hole.begin(), hole.end());
   const double offset = surface.planeOffset();

@@ -17,7 +17,9 @@ struct SurfaceMesh {
 
 // Plane coordinates are two world axes when the surface faces along one (exact coordinates,
 // axis-aligned edges stay axis-aligned), else axes along its longest outer edge.
+// The second form meshes with `mesher`, whose memory carries over from surface to surface.
 SurfaceMesh meshSurface(const Surface& surface);
+SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher);
 
 // The surface's rings in the plane coordinates `frameOf` is meshed in (a surface in the same
 // plane), counter-clockwise about the front normal.

@@ -15,9 +15,13 @@ namespace mesher {
 // no allocation each and the table stays small.
 class PointIds {
  public:
-  PointIds(size_t expected, double rootSize) : toUnit_(1 / rootSize) {
+  // Empties the table for about `expected` points in a root square of edge `rootSize`, keeping
+  // its memory.
+  void reset(size_t expected, double rootSize) {
+    toUnit_ = 1 / rootSize;
     slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
     shift_ = 64 - std::countr_zero(slots_.size());
+    points_.clear();
     points_.reserve(expected);
   }
 
@@ -42,14 +46,6 @@ class PointIds {
  private:
   static constexpr uint32_t kEmpty = 0xffffffffu;
 
-  // splitmix64's finaliser: coordinates that are small integers differ only in their high bits.
-  static uint64_t mix(uint64_t x) {
-    x ^= x >> 30;
-    x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 27;
-    x *= 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-  }
   static uint64_t spreadBits(uint64_t v) {  // 32 bits to the even bits of 64
     v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
     v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
@@ -68,7 +64,10 @@ class PointIds {
     std::memcpy(&a, &p.x, sizeof a);
     std::memcpy(&b, &p.y, sizeof b);
     const uint64_t cell = (spreadBits(x) | spreadBits(y) << 1) >> shift_;
-    return static_cast<size_t>(cell ^ (mix(a ^ mix(b)) & 65535)) & (slots_.size() - 1);
+    // The top bits of a product by an odd constant depend on every bit of the coordinate, and
+    // the high bits are where small integers differ.
+    const uint64_t scatter = (a * 0x9E3779B97F4A7C15ull ^ b * 0xC2B2AE3D27D4EB4Full) >> 48;
+    return static_cast<size_t>(cell ^ scatter) & (slots_.size() - 1);
   }
   void grow() {
     slots_.assign(slots_.size() * 2, kEmpty);
@@ -80,23 +79,30 @@ class PointIds {
     }
   }
 
-  double toUnit_;
+  double toUnit_ = 1;
   int shift_ = 0;
   std::vector<uint32_t> slots_;
   std::vector<Vec2> points_;  // tree coordinates, by id
 };
 
 LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
-    : built_(built),
-      ids_(std::make_unique<PointIds>(expectedLeaves + built.tree.input.vertices.size(), std::exp2(built.tree.maxDepth))),
-      regions_(built.tree) {
-  vertices_ = polygon.outer;
-  for (const Ring2& hole : polygon.holes) vertices_.insert(vertices_.end(), hole.begin(), hole.end());
+    : built_(built), ids_(std::make_unique<PointIds>()), regions_(built.tree) {
+  reset(polygon, expectedLeaves);
+}
+
+void LeafEmitter::reset(const PolygonWithHoles& polygon, size_t expectedLeaves) {
+  ids_->reset(expectedLeaves + built_.tree.input.vertices.size(), std::exp2(built_.tree.maxDepth));
+  vertices_.clear();
   vertices_.reserve(expectedLeaves * 2);
+  vertices_.insert(vertices_.end(), polygon.outer.begin(), polygon.outer.end());
+  for (const Ring2& hole : polygon.holes) vertices_.insert(vertices_.end(), hole.begin(), hole.end());
   // Input vertices take ids 0..n-1, as in the vertex list (two at one tree point cannot occur:
   // the tree would have refused them).
+  inputToMesh_.clear();
   bool added;
-  for (const Vec2& v : built.tree.input.vertices) inputToMesh_.push_back(ids_->findOrAdd(v, added));
+  for (const Vec2& v : built_.tree.input.vertices) inputToMesh_.push_back(ids_->findOrAdd(v, added));
+  // Templates depend on the frame's stretch.
+  haveTemplate_.fill(false);
 }
 
 void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plane) {
@@ -146,6 +152,7 @@ void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
   if (leaf.templateKey >= 0) {
     const auto key = static_cast<size_t>(leaf.templateKey);
     if (!haveTemplate_[key]) {
+      templates_[key].clear();
       subdomains_.mesh(ring_, -1, &inner, built_.frame.planePerTree(), templates_[key]);
       haveTemplate_[key] = true;
     }

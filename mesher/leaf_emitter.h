@@ -22,6 +22,8 @@ class LeafEmitter {
   // polygon's own points (outer ring, then holes), exact.
   LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves);
   ~LeafEmitter();
+  // Starts over for a new polygon in `built` (rebuilt in place), keeping memory.
+  void reset(const PolygonWithHoles& polygon, size_t expectedLeaves);
 
   // Appends leaf q's elements to `out` (corner ids, counter-clockwise, [3] = 0xffffffff for
   // triangles) and any new vertex to vertices(). Outside leaves add nothing.

@@ -4,6 +4,7 @@
 #include "mesher/leaf_emitter.h"
 #include "mesher/quadtree.h"
 
+#include <optional>
 #include <stdexcept>
 
 namespace mesher {
@@ -14,15 +15,30 @@ size_t Mesh::quadCount() const {
   return quads;
 }
 
-Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) {
+Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) { return Mesher().mesh(polygon, settings); }
+
+struct Mesher::State {
+  PolygonTree built;
+  std::vector<int32_t> leaves;
+  std::optional<LeafEmitter> emitter;  // bound to `built`, made on first use
+};
+
+Mesher::Mesher() : state_(std::make_unique<State>()) {}
+Mesher::~Mesher() = default;
+
+Mesh Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings) {
+  State& s = *state_;
   // Phases of chapter 5: tree setup, edge storage and balancing; then leaf by leaf meshing.
-  const PolygonTree built = buildBalancedTree(polygon, settings.patchSize);
-  const std::vector<int32_t> leaves = built.tree.leaves();
-  LeafEmitter emitter(polygon, built, leaves.size());
+  buildPolygonTree(polygon, settings.patchSize, s.built);
+  balance(s.built.tree);
+  s.built.tree.changes.clear();
+  s.built.tree.leaves(s.leaves);
+  if (s.emitter) s.emitter->reset(polygon, s.leaves.size());
+  else s.emitter.emplace(polygon, s.built, s.leaves.size());
   Mesh mesh;
-  mesh.elements.reserve(leaves.size() * 2);
-  for (int32_t q : leaves) emitter.emit(q, mesh.elements);
-  mesh.vertices = emitter.takeVertices();
+  mesh.elements.reserve(s.leaves.size() * 2);
+  for (int32_t q : s.leaves) s.emitter->emit(q, mesh.elements);
+  mesh.vertices = s.emitter->takeVertices();
   return mesh;
 }
 

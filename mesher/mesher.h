@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace mesher {
@@ -40,5 +41,18 @@ struct Mesh {
 // Meshes a valid polygon (simple rings, holes strictly inside and disjoint; either winding).
 // Throws std::invalid_argument for a polygon whose vertices no tree depth can separate.
 Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings);
+
+// meshPolygon for polygon after polygon: keeps the last one's tree and scratch memory, so a
+// scene of many small surfaces is meshed without allocating much more than the meshes.
+class Mesher {
+ public:
+  Mesher();
+  ~Mesher();
+  Mesh mesh(const PolygonWithHoles& polygon, const MeshSettings& settings);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace mesher

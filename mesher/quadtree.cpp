@@ -11,7 +11,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 
 namespace mesher {
@@ -20,23 +22,39 @@ namespace {
 
 enum class Visit { Done, Again, Fail };
 
+// The pending quadrants of a depth-first walk, on the walker's own stack frame (walks nest:
+// storing an edge splits leaves, which stores edges). A node is pushed as its four children when
+// popped, so the stack holds at most three per level of the path plus four.
+class QuadrantStack {
+ public:
+  explicit QuadrantStack(std::initializer_list<int32_t> items) {
+    for (int32_t q : items) push(q);
+  }
+  bool empty() const { return size_ == 0; }
+  void push(int32_t q) { items_[size_++] = q; }
+  int32_t pop() { return items_[--size_]; }
+
+ private:
+  std::array<int32_t, 3 * kDeepestTree + 8> items_;
+  size_t size_ = 0;
+};
+
 // Visits the leaves below quadrant `from` that `meets` accepts (it is asked of every quadrant on
 // the way down). `atLeaf` may split the leaf and answer Again to have it visited as a node, or
 // Fail to stop; the result is false then.
 template <typename Meets, typename AtLeaf>
 bool descend(const Quadtree& tree, int32_t from, Meets meets, AtLeaf atLeaf) {
-  std::vector<int32_t> stack{from};
+  QuadrantStack stack{from};
   while (!stack.empty()) {
-    const int32_t q = stack.back();
-    stack.pop_back();
+    const int32_t q = stack.pop();
     if (!meets(q)) continue;
     if (!tree[q].isLeaf()) {
-      for (int32_t c = 0; c < 4; ++c) stack.push_back(tree[q].firstChild + c);
+      for (int32_t c = 0; c < 4; ++c) stack.push(tree[q].firstChild + c);
       continue;
     }
     const Visit visit = atLeaf(q);
     if (visit == Visit::Fail) return false;
-    if (visit == Visit::Again) stack.push_back(q);
+    if (visit == Visit::Again) stack.push(q);
   }
   return true;
 }
@@ -134,13 +152,12 @@ bool Quadtree::splitLeaf(int32_t q) {
   // New leaves without edges take their side from the old leaf's vertex and edges, or its status;
   // while the tree is being built, more edges may still arrive, so they wait for the end.
   if (!complete) return true;
-  std::vector<int32_t> stack{first, first + 1, first + 2, first + 3};
+  QuadrantStack stack{first, first + 1, first + 2, first + 3};
   while (!stack.empty()) {
-    const int32_t c = stack.back();
-    stack.pop_back();
+    const int32_t c = stack.pop();
     const Quadrant& child = (*this)[c];
     if (!child.isLeaf()) {
-      for (int32_t k = 0; k < 4; ++k) stack.push_back(child.firstChild + k);
+      for (int32_t k = 0; k < 4; ++k) stack.push(child.firstChild + k);
     } else if (child.edgeCount == 0) {
       const double half = static_cast<double>(edgeLength(child)) / 2;
       const bool inside = old.edgeCount == 0 ? old.status == QuadStatus::Inside
@@ -300,18 +317,23 @@ bool segmentCrossesOpenSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, d
 
 std::vector<int32_t> Quadtree::leaves() const {
   std::vector<int32_t> out;
-  std::vector<int32_t> stack{0};
+  leaves(out);
+  return out;
+}
+
+void Quadtree::leaves(std::vector<int32_t>& out) const {
+  out.clear();
+  out.reserve(quadrants.size() * 3 / 4 + 1);
+  QuadrantStack stack{0};
   while (!stack.empty()) {
-    const int32_t q = stack.back();
-    stack.pop_back();
+    const int32_t q = stack.pop();
     const Quadrant& quad = quadrants[static_cast<size_t>(q)];
     if (quad.isLeaf()) {
       out.push_back(q);
       continue;
     }
-    for (int32_t c = 3; c >= 0; --c) stack.push_back(quad.firstChild + c);
+    for (int32_t c = 3; c >= 0; --c) stack.push(quad.firstChild + c);
   }
-  return out;
 }
 
 int32_t Quadtree::leafAt(Vec2 p) const {
@@ -378,6 +400,14 @@ Vec2 treePoint(const TreeFrame& frame, Vec2 plane) {
 
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame) {
   QuadtreeInput input;
+  quadtreeInput(polygon, frame, input);
+  return input;
+}
+
+void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, QuadtreeInput& input) {
+  input.vertices.clear();
+  input.edges.clear();
+  input.removed.clear();
   auto addRing = [&](const Ring2& ring, bool counterClockwise) {
     const auto first = static_cast<uint32_t>(input.vertices.size());
     for (const Vec2& p : ring) input.vertices.push_back(treePoint(frame, p));
@@ -399,14 +429,21 @@ QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& fr
   addRing(polygon.outer, true);
   for (const Ring2& hole : polygon.holes) addRing(hole, false);
   linkEdges();
-  return input;
 }
 
 std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap) {
   Quadtree tree;
+  tree.input = std::move(input);
+  if (!buildQuadtree(tree, maxDepth, depth, gridSnap)) return std::nullopt;
+  return tree;
+}
+
+bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
   tree.maxDepth = maxDepth;
   tree.gridSnap = gridSnap;
-  tree.input = std::move(input);
+  tree.complete = false;
+  tree.changes.clear();
+  tree.quadrants.clear();
   tree.quadrants.reserve(size_t{4} << (2 * std::min(depth, 10)));
   tree.quadrants.push_back(Quadrant{});
 
@@ -414,28 +451,32 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
   for (size_t q = 0; q < tree.quadrants.size(); ++q)
     if (tree.quadrants[q].level < depth) tree.splitLeaf(static_cast<int32_t>(q));
   for (uint32_t v = 0; v < tree.input.vertices.size(); ++v)
-    if (!tree.insertVertex(v)) return std::nullopt;
+    if (!tree.insertVertex(v)) return false;
   for (uint32_t e = 0; e < tree.input.edges.size(); ++e)
-    if (!tree.insertEdge(0, e)) return std::nullopt;
+    if (!tree.insertEdge(0, e)) return false;
 
   // Classification: leaves holding edges are boundary (set as they were stored), the others
   // lie wholly on one side.
   classifyLeaves(tree, 32);
   tree.complete = true;
   tree.uniformDepth = depth;
-  return tree;
+  return true;
 }
 
 PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, int deeper) {
+  PolygonTree result;
+  buildPolygonTree(polygon, patchSize, result, deeper);
+  return result;
+}
+
+void buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper) {
   constexpr int kDeepest = kDeepestTree;
   const double longerExtent = 1 / setupTreeFrame(polygon, 0).scale;  // a root of edge 1
   const int depth = initialDepth(longerExtent, patchSize, kDeepest);
   for (int maxDepth = std::min(kDeepest, depth + 16 + deeper);; maxDepth = std::min(kDeepest, maxDepth + 8)) {
-    PolygonTree result{setupTreeFrame(polygon, maxDepth), {}};
-    if (auto tree = buildQuadtree(quadtreeInput(polygon, result.frame), maxDepth, depth, result.frame.gridSnap)) {
-      result.tree = std::move(*tree);
-      return result;
-    }
+    into.frame = setupTreeFrame(polygon, maxDepth);
+    quadtreeInput(polygon, into.frame, into.tree.input);
+    if (buildQuadtree(into.tree, maxDepth, depth, into.frame.gridSnap)) return;
     if (maxDepth == kDeepest) throw std::invalid_argument("polygon vertices cannot be separated (repeated or crossing)");
   }
 }

@@ -55,8 +55,9 @@ class Quadtree {
   int64_t edgeLength(const Quadrant& q) const { return int64_t{1} << (maxDepth - q.level); }
   const Quadrant& operator[](int32_t q) const { return quadrants[static_cast<size_t>(q)]; }
 
-  // Leaves only, in tree order.
+  // Leaves only, in tree order (into `out`, replacing what it held).
   std::vector<int32_t> leaves() const;
+  void leaves(std::vector<int32_t>& out) const;
   // The leaf whose half-open square [x, x + s) x [y, y + s) holds p; -1 outside the root.
   int32_t leafAt(Vec2 p) const;
   // The leaves sharing part of `side` of leaf q (one coarser or equal leaf, or several finer),
@@ -117,8 +118,10 @@ class Quadtree {
 // within frame.gridSnap of.
 Vec2 treePoint(const TreeFrame& frame, Vec2 plane);
 
-// Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`).
+// Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`);
+// the second form fills `into`, reusing its memory.
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame);
+void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, QuadtreeInput& into);
 
 // Subdivides the root uniformly to `depth`, stores every vertex and edge under the rules of 5.2:
 // a leaf holds at most one distinct vertex (in its closed square); with a vertex, only edges
@@ -126,6 +129,8 @@ QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& fr
 // leaf is Inside or Outside by its centre. Returns nothing when two vertices cannot be separated
 // within maxDepth levels (the caller builds a deeper tree: vertices are never merged).
 std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap = 1e-6);
+// The same over `tree.input`, reusing the tree's memory; false where the first form gives nothing.
+bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap);
 
 // A polygon's tree for a patch size: the frame of 5.1, the depth of 5.2, and a maximum depth
 // that starts 16 + `deeper` levels below the patch size and grows by 8 (up to 50) whenever two
@@ -136,6 +141,8 @@ struct PolygonTree {
   Quadtree tree;
 };
 PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, int deeper = 0);
+// The same into `into`, reusing its memory (meshing surface after surface).
+void buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper = 0);
 
 // The deepest tree buildPolygonTree makes: quadrant corners stay exact doubles.
 constexpr int kDeepestTree = 50;

@@ -85,7 +85,8 @@ int runMesh(const MeshOptions& options) {
       for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
     std::vector<engine::SurfaceMesh> meshes(scene.surfaces.size());
     meshMs = bestOf(options.repeat, [&] {
-      for (size_t i = 0; i < scene.surfaces.size(); ++i) meshes[i] = engine::meshSurface(scene.surfaces[i]);
+      mesher::Mesher mesher;
+      for (size_t i = 0; i < scene.surfaces.size(); ++i) meshes[i] = engine::meshSurface(scene.surfaces[i], mesher);
     });
     for (const engine::SurfaceMesh& m : meshes) tally.add(m.polygon, m.mesh);
     if (!options.dump.empty()) {

@@ -16,7 +16,8 @@ void meshKitchen(benchmark::State& state) {
   size_t elements = 0;
   for (auto _ : state) {
     elements = 0;
-    for (const engine::Surface& s : scene.surfaces) elements += engine::meshSurface(s).mesh.elements.size();
+    mesher::Mesher mesher;
+    for (const engine::Surface& s : scene.surfaces) elements += engine::meshSurface(s, mesher).mesh.elements.size();
   }
   state.counters["elements"] = static_cast<double>(elements);
   state.counters["elements/s"] = benchmark::Counter(static_cast<double>(elements), benchmark::Counter::kIsIterationInvariantRate);

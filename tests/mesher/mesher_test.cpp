@@ -110,6 +110,20 @@ TEST(MeshChecks, AspectRatioIsOneForEquilateralAndFallsForSlivers) {
   EXPECT_LT(checkMesh(sliver, thin).smallestAspectRatio, 0.05);
 }
 
+// A Mesher carries memory from polygon to polygon, nothing else: each mesh equals a fresh one.
+TEST(Mesher, ReusedForManyPolygonsGivesWhatFreshMeshingGives) {
+  std::mt19937 random(5);
+  Mesher mesher;
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE(trial);
+    const PolygonWithHoles polygon = trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial);
+    const double patch = 3 + trial % 17;
+    const Mesh reused = mesher.mesh(polygon, {patch}), fresh = meshPolygon(polygon, {patch});
+    EXPECT_EQ(reused.vertices, fresh.vertices);
+    EXPECT_EQ(reused.elements, fresh.elements);
+  }
+}
+
 // Angles below the bound count against a mesh except at input corners that are sharper.
 TEST(MeshChecks, AnglesBelowTheBoundCountExceptAtSharperInputCorners) {
   // A 10-degree spike meshed as one triangle: its only small angle is the input corner's own.
