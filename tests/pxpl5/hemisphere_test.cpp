@@ -79,7 +79,7 @@ Configuration randomConfiguration(std::mt19937& random) {
   }
 }
 
-TEST(Hemisphere, UnoccludedFactorsMatchLambertAndConvergeWithResolution) {
+TEST(Pxpl5Hemisphere, UnoccludedFactorsMatchLambertAndConvergeWithResolution) {
   std::mt19937 random(2024);
   std::vector<Configuration> configurations;
   for (int i = 0; i < 300; ++i) configurations.push_back(randomConfiguration(random));
@@ -105,7 +105,7 @@ TEST(Hemisphere, UnoccludedFactorsMatchLambertAndConvergeWithResolution) {
   }
 }
 
-TEST(Hemisphere, HemicubeAlsoMatchesLambert) {
+TEST(Pxpl5Hemisphere, HemicubeAlsoMatchesLambert) {
   std::mt19937 random(77);
   std::vector<Configuration> configurations;
   for (int i = 0; i < 200; ++i) configurations.push_back(randomConfiguration(random));
@@ -126,7 +126,7 @@ TEST(Hemisphere, HemicubeAlsoMatchesLambert) {
   }
 }
 
-TEST(Hemisphere, ClosedBoxSumsToOne) {
+TEST(Pxpl5Hemisphere, ClosedBoxSumsToOne) {
   const Soup box = test::closedBox({0, 0, 0}, {3, 2, 2.5f}, 6);
   std::mt19937 random(5);
   std::uniform_real_distribution<float> u(0, 1);
@@ -163,7 +163,7 @@ Soup occlusionScene(float occluderX0, float occluderX1) {
   return soup;
 }
 
-TEST(Hemisphere, OccludedPolygons) {
+TEST(Pxpl5Hemisphere, OccludedPolygons) {
   const Viewpoint view{{0, 0, 0}, {0, 0, 1}, {}};
   for (Projection projection : {Projection::kHemisphere, Projection::kHemicube}) {
     HemisphereRenderer renderer(settings(512, projection));
@@ -193,7 +193,7 @@ TEST(Hemisphere, OccludedPolygons) {
   }
 }
 
-TEST(Hemisphere, PolygonsAtTheHorizon) {
+TEST(Pxpl5Hemisphere, PolygonsAtTheHorizon) {
   HemisphereRenderer renderer(settings(512));
   const Viewpoint view{{0, 0, 0}, {0, 0, 1}, {}};
   Soup soup;
@@ -209,7 +209,7 @@ TEST(Hemisphere, PolygonsAtTheHorizon) {
   EXPECT_EQ(factorOf(frame, 3), 0.0);
 }
 
-TEST(Hemisphere, TinyPolygonsTileLikeTheirUnion) {
+TEST(Pxpl5Hemisphere, TinyPolygonsTileLikeTheirUnion) {
   // A 1 x 1 square at distance 3 cut into 120 x 120 quads, each far below a pixel at 128: the
   // tiles leave no crack, so they cover the pixels the whole square covers.
   HemisphereRenderer renderer(settings(128));
@@ -228,7 +228,7 @@ TEST(Hemisphere, TinyPolygonsTileLikeTheirUnion) {
   EXPECT_LE(renderer.render(view, speck.view()).total, 3 * renderer.render(view, whole.view()).weights[64 * 128 + 64]);
 }
 
-TEST(Hemisphere, HugePolygons) {
+TEST(Pxpl5Hemisphere, HugePolygons) {
   for (Projection projection : {Projection::kHemisphere, Projection::kHemicube}) {
     HemisphereRenderer renderer(settings(256, projection));
     const Viewpoint view{{0, 0, 0}, {0, 0, 1}, {}};
@@ -257,7 +257,7 @@ Soup randomTriangles(int count, uint32_t seed) {
   return soup;
 }
 
-TEST(Hemisphere, SameAnswerForOneTwoAndEightThreadsAndForTheReference) {
+TEST(Pxpl5Hemisphere, SameAnswerForOneTwoAndEightThreadsAndForTheReference) {
   const Soup soup = randomTriangles(5000, 3);
   const Viewpoint view{{0.1f, 0.2f, 0.3f}, {0.3f, -0.2f, 1}, {}};
   for (Projection projection : {Projection::kHemisphere, Projection::kHemicube}) {
@@ -282,7 +282,7 @@ TEST(Hemisphere, SameAnswerForOneTwoAndEightThreadsAndForTheReference) {
   }
 }
 
-TEST(Hemisphere, IdsAreSummedAndSortedWhateverTheirOrder) {
+TEST(Pxpl5Hemisphere, IdsAreSummedAndSortedWhateverTheirOrder) {
   HemisphereRenderer renderer(settings(128));
   Soup soup;
   soup.add({{-1, -1, 2}, {0, -1, 2}, {0, 1, 2}, {-1, 1, 2}}, 9);
@@ -297,7 +297,7 @@ TEST(Hemisphere, IdsAreSummedAndSortedWhateverTheirOrder) {
   EXPECT_NEAR(frame.factors[1].factor, 0.75 * square, 0.02 * square);  // by symmetry, three quarters
 }
 
-TEST(Hemisphere, RejectsBadInput) {
+TEST(Pxpl5Hemisphere, RejectsBadInput) {
   EXPECT_THROW(HemisphereRenderer(settings(7)), std::invalid_argument);
   EXPECT_THROW(HemisphereRenderer(settings(101)), std::invalid_argument);
   HemisphereRenderer renderer(settings(64));
@@ -312,7 +312,7 @@ TEST(Hemisphere, RejectsBadInput) {
   EXPECT_EQ(renderer.render(view, {vertices, {}}).total, 0.0);
 }
 
-TEST(Hemisphere, CountersDescribeTheFrame) {
+TEST(Pxpl5Hemisphere, CountersDescribeTheFrame) {
   HemisphereRenderer renderer(settings(256));
   Viewpoint view;
   const Soup room = test::benchmarkRoom(2000, view);

@@ -26,7 +26,7 @@ size_t countValue(const Machine& machine, uint32_t value) {
   return n;
 }
 
-TEST(Machine, RectangleCoversItsPixelsAcrossRegions) {
+TEST(Pxpl5Machine, RectangleCoversItsPixelsAcrossRegions) {
   Machine machine({300, 200, 1, Evaluator::kVector});
   EXPECT_EQ(machine.pixelStride(), 384);
   machine.renderFrame(1, [](size_t, size_t, Emitter& out) {
@@ -51,7 +51,7 @@ TEST(Machine, RectangleCoversItsPixelsAcrossRegions) {
   EXPECT_EQ(c.pixelsWritten, 160u * 90u);
 }
 
-TEST(Machine, QuadraticExpressionDrawsADisk) {
+TEST(Pxpl5Machine, QuadraticExpressionDrawsADisk) {
   // r^2 - (x - cx)^2 - (y - cy)^2 >= 0, straight from the quadratic evaluator.
   Machine machine({256, 256, 1, Evaluator::kVector});
   const float cx = 100.3f, cy = 140.7f, r = 60.0f;
@@ -70,7 +70,7 @@ TEST(Machine, QuadraticExpressionDrawsADisk) {
   EXPECT_NEAR(static_cast<double>(inside), static_cast<double>(expected), 4.0);  // float rounding on the rim only
 }
 
-TEST(Machine, NearerWinsAndTiesKeepTheFirst) {
+TEST(Pxpl5Machine, NearerWinsAndTiesKeepTheFirst) {
   Machine machine({128, 128, 1, Evaluator::kVector});
   machine.renderFrame(3, [](size_t begin, size_t end, Emitter& out) {
     for (size_t i = begin; i < end; ++i) {
@@ -87,7 +87,7 @@ TEST(Machine, NearerWinsAndTiesKeepTheFirst) {
   EXPECT_EQ(machine.depthPlane()[static_cast<size_t>(100 * 128 + 40)], 2.0f);
 }
 
-TEST(Machine, StoredTermAndPermanentlyDisabledPixels) {
+TEST(Pxpl5Machine, StoredTermAndPermanentlyDisabledPixels) {
   Machine machine({128, 128, 1, Evaluator::kVector});
   // Term = 1 on the left half; "term - 0.5 >= 0" selects it. Row 5 is never written.
   for (int y = 0; y < 128; ++y)
@@ -102,7 +102,7 @@ TEST(Machine, StoredTermAndPermanentlyDisabledPixels) {
   EXPECT_EQ(machine.valuePlane()[static_cast<size_t>(6 * 128 + 3)], 1u);
 }
 
-TEST(Machine, RejectsPrimitivesWithoutEdgesOrWithTooMany) {
+TEST(Pxpl5Machine, RejectsPrimitivesWithoutEdgesOrWithTooMany) {
   Machine machine({128, 128, 1, Evaluator::kVector});
   const std::vector<Expression> many(33, Expression{0, 0, 1});
   EXPECT_THROW(machine.renderFrame(1, [&](size_t, size_t, Emitter& out) { out.convex({0, 0, 8, 8}, {}, constantDepth(1), 1); }),
@@ -166,7 +166,7 @@ void loadRandomTerm(Machine& machine, uint32_t seed) {
   for (float& t : machine.termPlane()) t = u(random);
 }
 
-TEST(Machine, VectorEvaluatorMatchesTheScalarReferenceBitForBit) {
+TEST(Pxpl5Machine, VectorEvaluatorMatchesTheScalarReferenceBitForBit) {
   for (uint32_t seed = 1; seed <= 4; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const RandomFrame frame(seed, 333, 260, 600);
@@ -183,7 +183,7 @@ TEST(Machine, VectorEvaluatorMatchesTheScalarReferenceBitForBit) {
   }
 }
 
-TEST(Machine, SameFrameForAnyNumberOfGraphicsProcessors) {
+TEST(Pxpl5Machine, SameFrameForAnyNumberOfGraphicsProcessors) {
   const RandomFrame frame(9, 512, 512, 3000);
   Machine one({512, 512, 1, Evaluator::kVector});
   one.renderFrame(frame.bounds.size(), frame.program(), 100);
