@@ -126,6 +126,17 @@ bool SubdomainRemover::fanFromInside(const std::vector<Vec2>& points, size_t rin
   return true;
 }
 
+bool SubdomainRemover::reachesBound() const {
+  for (const RingElement& e : trial_)
+    for (uint8_t k = 0; k < e.count; ++k) {
+      const uint32_t at = e.v[k];
+      const Vec2 u = shaped_[e.v[(k + e.count - 1) % e.count]] - shaped_[at], v = shaped_[e.v[(k + 1) % e.count]] - shaped_[at];
+      const double dot = glm::dot(u, v);
+      if (dot > 0 && std::abs(u.x * v.y - u.y * v.x) < tanReach_[at] * dot * (1 - 1e-12)) return false;
+    }
+  return true;
+}
+
 double SubdomainRemover::score() const {
   double worst = std::numeric_limits<double>::infinity();
   for (const RingElement& e : trial_)
@@ -146,11 +157,18 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   // Angles are judged with the ring scaled to its true proportions.
   shaped_.assign(points_.begin(), points_.end());
   for (Vec2& p : shaped_) p *= shapeScale;
-  // What each ring corner's elements can reach: the bound, or the ring's own angle where sharper.
+  // What each ring corner's elements can reach: the bound, or the ring's own angle where
+  // sharper; as a tangent for the quick test, in degrees for scores.
+  static const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
   reach_.assign(n + 1, kAngleBoundDeg);
+  tanReach_.assign(n + 1, kTanBound);
   for (size_t i = 0; i < n; ++i) {
-    const Vec2 prev = shaped_[(i + n - 1) % n], at = shaped_[i], next = shaped_[(i + 1) % n];
-    if (orient2(prev, at, next) > 0) reach_[i] = std::min(kAngleBoundDeg, angleDeg(prev, at, next));
+    const Vec2 u = shaped_[(i + n - 1) % n] - shaped_[i], v = shaped_[(i + 1) % n] - shaped_[i];
+    const double dot = glm::dot(u, v), turn = v.x * u.y - v.y * u.x;  // > 0: a convex corner
+    if (turn > 0 && dot > 0 && turn < kTanBound * dot) {
+      tanReach_[i] = turn / dot;
+      reach_[i] = angleDeg(shaped_[(i + n - 1) % n], shaped_[i], shaped_[(i + 1) % n]);
+    }
   }
   // Good sets beat the rest; among good ones the fewest elements win, among the rest a clearly
   // better score (or as good a one with fewer elements). The thesis' hinge goes first, so it
@@ -163,6 +181,11 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   auto consider = [&](bool fanned) {
     const size_t count = trial_.size();
     if (!fanned || (bestScore >= 1 && count > best_.size())) return;
+    // The first good set of the fewest elements ends the search: its score is not needed.
+    if (best_.empty() && count <= fewest && reachesBound()) {
+      best_.swap(trial_), bestScore = 1;
+      return;
+    }
     const double s = score();
     bool better = best_.empty();
     if (!better) {

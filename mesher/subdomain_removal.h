@@ -44,9 +44,11 @@ class SubdomainRemover {
   void mergeRun(const std::vector<Vec2>& points, uint32_t hinge);
   // How close trial_ comes to the bound: 1 or more when every angle reaches what it can.
   double score() const;
+  // Whether trial_ reaches the bound at every corner (score() >= 1), without angles.
+  bool reachesBound() const;
 
   std::vector<Vec2> points_, shaped_;
-  std::vector<double> reach_;
+  std::vector<double> reach_, tanReach_;
   std::vector<uint32_t> run_;
   std::vector<RingElement> trial_, best_;
 };
