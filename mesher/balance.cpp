@@ -44,7 +44,14 @@ size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
   return splits;
 }
 
-size_t balance(Quadtree& tree) { return balanceAround(tree, tree.leaves()); }
+size_t balance(Quadtree& tree) {
+  // No leaf is coarser than the uniform depth, so only leaves two levels below it can have a
+  // neighbour too coarse: the rest of a large floor need not look at its neighbours.
+  std::vector<int32_t> deep;
+  for (int32_t q : tree.leaves())
+    if (tree[q].level >= tree.uniformDepth + 2) deep.push_back(q);
+  return balanceAround(tree, std::move(deep));
+}
 
 PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize) {
   PolygonTree built = buildPolygonTree(polygon, patchSize);

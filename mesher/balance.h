@@ -16,7 +16,7 @@ namespace mesher {
 // The tree must be complete. Outside leaves take no part.
 size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
 
-// Balances the whole tree.
+// Balances the whole tree (as built: no leaf coarser than its uniform depth).
 size_t balance(Quadtree& tree);
 
 // A polygon's balanced tree: buildPolygonTree, then balance. Throws std::invalid_argument as
