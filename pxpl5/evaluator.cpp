@@ -1,5 +1,6 @@
 #include "pxpl5/evaluator.h"
 
+#include <algorithm>
 #include <bit>
 
 namespace pxpl5 {
@@ -76,7 +77,9 @@ template <bool kQuadratic>
 // The same for the common primitives (linear, 3 to 6 edges), the edge count known to the
 // compiler: one pass per row in which each pixel runs the whole stream, over whole runs of
 // eight pixels (lanes outside the area start disabled) so that no scalar remainder loop runs.
-// Rows are short (a small polygon's bounds), so this matters more than the lanes wasted.
+// Rows are short (a small polygon's bounds), so this matters more than the lanes wasted. The
+// runs start at the area, not at a multiple of eight (a five-pixel row is one run, not two),
+// moved left where they would leave the region: another renderer may be writing the next one.
 // Same expressions, same bits.
 constexpr int kLanes = 8;
 
@@ -84,9 +87,19 @@ template <int kEdges>
 [[gnu::always_inline]] inline void evaluateRowsFused(const SetupPrimitive& primitive, const Expression* edges, PixelRect area,
                                                      const PixelMemory& memory, EvaluatorStats& stats) {
   const uint32_t value = primitive.value;
-  const int lo = area.x0 & ~(kLanes - 1);
-  const int width = (area.x1 - lo + kLanes - 1) & ~(kLanes - 1);  // a multiple of kLanes: no remainder
-  uint32_t written = 0;
+  const int width = (area.x1 - area.x0 + kLanes - 1) & ~(kLanes - 1);  // a multiple of kLanes: no remainder
+  const int regionEnd = (area.x0 & ~(kRegionSize - 1)) + kRegionSize;
+  const int lo = std::min(area.x0, regionEnd - width);
+  // What is the same on every row: each lane's x and whether it lies in the area.
+  alignas(64) float xs[kRegionSize];
+  alignas(64) uint32_t inArea[kRegionSize];
+  for (int i = 0; i < width; ++i) {
+    const int px = lo + i;
+    xs[i] = static_cast<float>(px);
+    inArea[i] = px >= area.x0 && px < area.x1 ? ~0u : 0u;
+  }
+  // Pixels written, counted per lane and added up once.
+  alignas(32) uint32_t won[kLanes] = {};
   for (int y = area.y0; y < area.y1; ++y) {
     const float fy = static_cast<float>(y);
     RowTerms r[kEdges];
@@ -96,20 +109,22 @@ template <int kEdges>
     const float* __restrict term = memory.term + rowStart;
     float* __restrict depth = memory.depth + rowStart;
     uint32_t* __restrict values = memory.value + rowStart;
-    for (int i = 0; i < width; ++i) {
-      const int px = lo + i;
-      const float x = static_cast<float>(px), t = term[i];
-      uint32_t on = (px >= area.x0) & (px < area.x1) ? ~0u : 0u;
-      for (int k = 0; k < kEdges; ++k) on &= (r[k].a * x + r[k].c) + r[k].t * t >= 0 ? ~0u : 0u;
-      const float w = (d.a * x + d.c) + d.t * t;
-      const uint32_t wins = on & (w > depth[i] ? ~0u : 0u);
-      depth[i] = std::bit_cast<float>((std::bit_cast<uint32_t>(w) & wins) | (std::bit_cast<uint32_t>(depth[i]) & ~wins));
-      values[i] = (value & wins) | (values[i] & ~wins);
-      written += wins & 1u;
+    for (int run = 0; run < width; run += kLanes) {
+      for (int l = 0; l < kLanes; ++l) {
+        const int i = run + l;
+        const float x = xs[i], t = term[i];
+        uint32_t on = inArea[i];
+        for (int k = 0; k < kEdges; ++k) on &= (r[k].a * x + r[k].c) + r[k].t * t >= 0 ? ~0u : 0u;
+        const float w = (d.a * x + d.c) + d.t * t;
+        const uint32_t wins = on & (w > depth[i] ? ~0u : 0u);
+        depth[i] = std::bit_cast<float>((std::bit_cast<uint32_t>(w) & wins) | (std::bit_cast<uint32_t>(depth[i]) & ~wins));
+        values[i] = (value & wins) | (values[i] & ~wins);
+        won[l] += wins & 1u;
+      }
     }
-    stats.pixelOps += static_cast<uint64_t>(width) * (kEdges + 1);
   }
-  stats.written += written;
+  for (int l = 0; l < kLanes; ++l) stats.written += won[l];
+  stats.pixelOps += static_cast<uint64_t>(width) * static_cast<uint64_t>(area.y1 - area.y0) * (kEdges + 1);
 }
 
 }  // namespace

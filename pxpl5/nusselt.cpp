@@ -31,11 +31,11 @@ struct DiskGrid {
     e.t = static_cast<float>(n.z);
     return e;
   }
-  // Pixels whose centres lie in [lo, hi], one pixel wider each side for rounding (the edges,
-  // not the bounds, decide coverage).
+  // Pixels whose centres lie in [lo, hi], widened by a quarter pixel each side for the
+  // rounding of the float edge expressions (the edges, not the bounds, decide coverage).
   void pixels(double lo, double hi, int& p0, int& p1) const {
-    p0 = static_cast<int>(std::ceil((lo - first) / step)) - 1;
-    p1 = static_cast<int>(std::floor((hi - first) / step)) + 2;
+    p0 = static_cast<int>(std::ceil((lo - first) / step - 0.25));
+    p1 = static_cast<int>(std::floor((hi - first) / step + 0.25)) + 1;
   }
 };
 
