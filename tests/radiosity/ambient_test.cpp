@@ -10,7 +10,7 @@ namespace {
 
 // A closed box of one material: every surface sees the same light, so the exact radiance is
 // E / (1 - rho) everywhere, and emission plus rho x ambient must give it.
-TEST(Ambient, FurnaceIsExact) {
+TEST(RadiosityAmbient, FurnaceIsExact) {
   const glm::dvec3 rho{0.5, 0.25, 0.9}, emission{1, 2, 0.5};
   std::vector<SurfaceLight> box(6, SurfaceLight{2.0, rho, emission});
   const glm::dvec3 ambient = ambientRadiance(box);
@@ -19,7 +19,7 @@ TEST(Ambient, FurnaceIsExact) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(displayed[c], exact[c], 1e-12 * exact[c]);
 }
 
-TEST(Ambient, ScalesWithEmittedPowerNotEmitterCount) {
+TEST(RadiosityAmbient, ScalesWithEmittedPowerNotEmitterCount) {
   // One emitter of area 1 or two of area 0.5 emit the same power into the same room.
   const SurfaceLight wall{10, glm::dvec3{0.5}, glm::dvec3{0}};
   const std::vector<SurfaceLight> one{wall, {1, glm::dvec3{0.5}, glm::dvec3{4}}};
@@ -28,12 +28,12 @@ TEST(Ambient, ScalesWithEmittedPowerNotEmitterCount) {
   EXPECT_NEAR(ambientRadiance(one).x, 4.0 / 11.0 / 0.5, 1e-12);
 }
 
-TEST(Ambient, DarkSceneAndEmptySceneGiveZero) {
+TEST(RadiosityAmbient, DarkSceneAndEmptySceneGiveZero) {
   EXPECT_EQ(ambientRadiance(std::vector<SurfaceLight>{{1, glm::dvec3{0.5}, glm::dvec3{0}}}), glm::dvec3{0});
   EXPECT_EQ(ambientRadiance({}), glm::dvec3{0});
 }
 
-TEST(Ambient, PerfectReflectorsStayFinite) {
+TEST(RadiosityAmbient, PerfectReflectorsStayFinite) {
   const glm::dvec3 a = ambientRadiance(std::vector<SurfaceLight>{{1, glm::dvec3{1}, glm::dvec3{1}}});
   EXPECT_TRUE(std::isfinite(a.x));
   EXPECT_NEAR(a.x, 1000, 1e-6);

@@ -1,0 +1,134 @@
+#include "radiosity/form_factors.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace radiosity {
+
+namespace {
+
+// Newell's normal: its length is twice the area, for either winding.
+glm::dvec3 newell(const Polygon3& p) {
+  glm::dvec3 n{0};
+  for (int k = 0; k < p.n; ++k) {
+    const glm::dvec3& a = p.v[k];
+    const glm::dvec3& b = p.v[(k + 1) % p.n];
+    n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  return n;
+}
+
+double pieceRadius(const Polygon3& p, const glm::dvec3& centre) {
+  double r2 = 0;
+  for (int k = 0; k < p.n; ++k) r2 = std::max(r2, glm::dot(p.v[k] - centre, p.v[k] - centre));
+  return std::sqrt(r2);
+}
+
+// The four pieces of a polygon cut at its edge midpoints (and, for a quad, its bilinear centre).
+int splitInFour(const Polygon3& p, Polygon3 out[4]) {
+  if (p.n == 3) {
+    const glm::dvec3 ab = (p.v[0] + p.v[1]) * 0.5, bc = (p.v[1] + p.v[2]) * 0.5, ca = (p.v[2] + p.v[0]) * 0.5;
+    out[0] = {{p.v[0], ab, ca, {}}, 3};
+    out[1] = {{ab, p.v[1], bc, {}}, 3};
+    out[2] = {{ca, bc, p.v[2], {}}, 3};
+    out[3] = {{ab, bc, ca, {}}, 3};
+    return 4;
+  }
+  const glm::dvec3 ab = (p.v[0] + p.v[1]) * 0.5, bc = (p.v[1] + p.v[2]) * 0.5, cd = (p.v[2] + p.v[3]) * 0.5,
+                   da = (p.v[3] + p.v[0]) * 0.5, m = (p.v[0] + p.v[1] + p.v[2] + p.v[3]) * 0.25;
+  out[0] = {{p.v[0], ab, m, da}, 4};
+  out[1] = {{ab, p.v[1], bc, m}, 4};
+  out[2] = {{m, bc, p.v[2], cd}, 4};
+  out[3] = {{da, m, cd, p.v[3]}, 4};
+  return 4;
+}
+
+}  // namespace
+
+double polygonArea(const Polygon3& p) { return 0.5 * glm::length(newell(p)); }
+
+glm::dvec3 polygonCentroid(const Polygon3& p) {
+  // Fan triangles from the first corner, weighted by their areas.
+  glm::dvec3 sum{0};
+  double total = 0;
+  for (int k = 1; k + 1 < p.n; ++k) {
+    const double a = 0.5 * glm::length(glm::cross(p.v[k] - p.v[0], p.v[k + 1] - p.v[0]));
+    sum += a * (p.v[0] + p.v[k] + p.v[k + 1]) / 3.0;
+    total += a;
+  }
+  if (total <= 0) {
+    glm::dvec3 mean{0};
+    for (int k = 0; k < p.n; ++k) mean += p.v[k];
+    return mean / double(p.n);
+  }
+  return sum / total;
+}
+
+double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const Polygon3& p) {
+  // Clip at the horizon first: Lambert's formula holds only for what the hemisphere sees.
+  glm::dvec3 v[8];
+  int m = 0;
+  for (int k = 0; k < p.n; ++k) {
+    const glm::dvec3 a = p.v[k] - point, b = p.v[(k + 1) % p.n] - point;
+    const double da = glm::dot(a, normal), db = glm::dot(b, normal);
+    if (da >= 0) v[m++] = a;
+    if ((da >= 0) != (db >= 0)) v[m++] = a + (da / (da - db)) * (b - a);
+  }
+  if (m < 3) return 0;
+  double sum = 0;
+  for (int k = 0; k < m; ++k) {
+    const glm::dvec3 a = glm::normalize(v[k]), b = glm::normalize(v[(k + 1) % m]);
+    const glm::dvec3 c = glm::cross(a, b);
+    const double s = glm::length(c);
+    if (s == 0) continue;
+    sum += std::atan2(s, glm::dot(a, b)) * glm::dot(normal, c) / s;
+  }
+  return std::abs(sum) / (2 * std::numbers::pi);
+}
+
+void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
+                   double ratio, int splits, double& front, double& back) {
+  const glm::dvec3 centre = polygonCentroid(piece);
+  const double distance = glm::length(centre - r.centre) - r.radius;
+  if (splits <= 0 || pieceRadius(piece, centre) * ratio <= distance) {
+    // A piece small for its distance: a rule exact for quadratics over it (2 x 2 Gauss points on
+    // a quad's bilinear map, the 3-point rule on a triangle), so the error falls as the fourth
+    // power of the piece's size where the midpoint rule's falls as the square.
+    glm::dvec3 points[4];
+    double weights[4];
+    int count = 0;
+    if (piece.n == 3) {
+      const double b[3][3] = {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
+      for (const auto& w : b) {
+        points[count] = w[0] * piece.v[0] + w[1] * piece.v[1] + w[2] * piece.v[2];
+        weights[count++] = 1;
+      }
+    } else {
+      const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+      const glm::dvec3 &a = piece.v[0], &b = piece.v[1], &c = piece.v[2], &d = piece.v[3];
+      for (double u : g)
+        for (double v : g) {
+          points[count] = (1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d;
+          const glm::dvec3 du = (1 - v) * (b - a) + v * (c - d), dv = (1 - u) * (d - a) + u * (c - b);
+          weights[count++] = glm::length(glm::cross(du, dv));  // the map's area scale there
+        }
+    }
+    double total = 0;
+    for (int k = 0; k < count; ++k) total += weights[k];
+    for (int k = 0; k < count; ++k) {
+      const double f = weight * weights[k] / total * pointToPolygon(points[k], normal, r.polygon);
+      (glm::dot(r.normal, points[k]) > r.offset ? front : back) += f;
+    }
+    return;
+  }
+  Polygon3 parts[4];
+  const int count = splitInFour(piece, parts);
+  const double area = polygonArea(piece);
+  for (int k = 0; k < count; ++k)
+    areaToPolygon(parts[k], weight * polygonArea(parts[k]) / area, normal, r, ratio, splits - 1, front, back);
+}
+
+}  // namespace radiosity

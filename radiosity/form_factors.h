@@ -1,0 +1,47 @@
+// Analytic form factors, used where the hemisphere's item buffer is not good enough: from a
+// point to a polygon (Lambert's contour integral, clipped at the point's horizon, unoccluded),
+// and from an area to a polygon by splitting the area until each piece is small compared with
+// its distance to the polygon. Internal to radiosity/.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <array>
+
+namespace radiosity {
+
+// A convex planar polygon of 3 or 4 world-space corners.
+struct Polygon3 {
+  std::array<glm::dvec3, 4> v{};
+  int n = 0;
+};
+
+double polygonArea(const Polygon3& p);
+glm::dvec3 polygonCentroid(const Polygon3& p);  // area-weighted
+
+// The form factor from a differential area at `point` with unit `normal` to polygon `p`,
+// ignoring occlusion: the part of p below the point's horizon is clipped away, then Lambert's
+// formula sums each edge's angle times the cosine between its great circle and the normal.
+// 0 when p lies on or below the horizon. Either winding.
+double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const Polygon3& p);
+
+// The receiver of an area-to-polygon integral: its polygon and bounding sphere, and its plane
+// (dot(normal, q) == offset), whose front alone reflects.
+struct Receiver {
+  Polygon3 polygon;
+  glm::dvec3 centre{0};
+  double radius = 0;
+  glm::dvec3 normal{0};
+  double offset = 0;
+};
+
+// Adds to front/back weight x the form factor from `piece` (a part of the shooter, whose
+// normal is `normal`) to `r`, averaged over the piece: `piece` is split into four (edge
+// midpoints) while its radius exceeds its distance to r's bounding sphere over `ratio` and
+// `splits` allows, then each piece is integrated by a Gauss rule (4 points on a quad, 3 on a
+// triangle). A point behind r's plane sees r's back: its share goes to `back`. `weight` is the
+// piece's share of the shooter's area.
+void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
+                   double ratio, int splits, double& front, double& back);
+
+}  // namespace radiosity

@@ -1,0 +1,147 @@
+// walkrad's radiosity solver: progressive-refinement shooting (Cohen, Chen, Wallace, Greenberg
+// 1988; thesis chapter 2) over meshed planar surfaces, with point-to-polygon form factors from
+// the emulated Pixel-Planes 5 (pxpl5/hemisphere.h). Plain data in, plain data out; no GL.
+//
+// Units. Everything is radiance (W sr^-1 m^-2 in the scene's units), in and out: emission is the
+// outgoing radiance of a Lambertian emitter, results are outgoing radiance. For Lambertian
+// surfaces exitance (radiosity in the thesis' sense) is pi x radiance, and the radiosity
+// equation B_i = E_i + rho_i sum_j F_ij B_j is linear, so it holds for radiance unchanged. Power
+// is where the pi appears: a patch of area A and radiance L emits pi L A. Energy figures below
+// (Stats) are powers in those units, per colour channel.
+//
+// Elements and patches (substructuring, Cohen et al. 1986). Elements receive light and carry
+// the displayed radiance; shooting patches are groups of elements of one surface that shoot
+// their unshot light together from one hemisphere frame. Which elements form a patch is decided
+// outside (groupIntoPatches below, or the quadtree's parents); by default every element is its
+// own patch.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace radiosity {
+
+constexpr uint32_t kNone = 0xffffffffu;
+
+// One planar surface, meshed. Vertices are shared by the elements of this surface only.
+struct Surface {
+  std::vector<glm::dvec3> vertices;                // world coordinates
+  std::vector<std::array<uint32_t, 4>> elements;   // convex, corner indices into `vertices`,
+                                                   // counter-clockwise seen from the front;
+                                                   // triangles have [3] == kNone
+  glm::dvec3 normal{0, 0, 1};                      // unit, toward the front (reflects and emits)
+  glm::dvec3 reflectance{0.5};                     // diffuse albedo per channel, 0..1
+  glm::dvec3 emission{0};                          // emitted radiance per channel, >= 0
+  // Optional substructuring: per element, its shooting patch (0-based, local to this surface,
+  // every index below the largest used). Empty: each element shoots on its own.
+  std::vector<uint32_t> patchOfElement;
+};
+
+// Groups a surface's elements into shooting patches of about `patchEdge` across: the element
+// centroids are binned into squares of that size in the surface's plane, in order of first
+// appearance, so the result is deterministic. Returns Surface::patchOfElement.
+std::vector<uint32_t> groupIntoPatches(const Surface& surface, double patchEdge);
+
+struct SolverSettings {
+  int resolution = 256;        // hemisphere pixels across (pxpl5; even, >= 8)
+  int graphicsProcessors = 1;  // pxpl5 worker threads; results do not depend on it
+  // Receivers whose bounding sphere comes closer to the shooter's centre than this many shooter
+  // radii are near-field: their form factor is integrated over the shooter's area instead of
+  // taken from its centre. The point approximation's error falls as (radius / distance)^2: about
+  // 20% for two unit squares a unit apart (1.4 radii), about 1% at 6 radii.
+  double nearFieldRatio = 8;
+  // In that integral the shooter's elements are split in four while a piece's radius exceeds
+  // its distance to the receiver over `pieceRatio`, at most `maxShooterSplits` times, and each
+  // piece is integrated by a Gauss rule (error falling as the fourth power of its size).
+  double pieceRatio = 3;
+  int maxShooterSplits = 3;
+  // Receivers whose form factor is below this many hemisphere pixels are too small for the item
+  // buffer (a pixel is either theirs or not): their factor is computed analytically.
+  double smallReceiverPixels = 32;
+};
+
+// Counters since construction. Powers are per channel (see the units above).
+struct Stats {
+  uint64_t shots = 0;
+  uint64_t frames = 0;             // hemisphere frames rendered
+  uint64_t nearReceivers = 0;      // receiver factors integrated over the shooter's area
+  uint64_t smallReceivers = 0;     // receiver factors computed analytically for their size
+  uint64_t renormalisedShots = 0;  // shots whose corrections were too big for the rest to absorb
+  double seconds = 0;              // wall time spent in step()
+  glm::dvec3 emittedPower{0};      // pi x sum of emission x area
+  glm::dvec3 absorbedPower{0};     // absorbed by the front of elements, (1 - rho) of what arrives
+  glm::dvec3 backPower{0};         // arrived at the back of an element: one-sided, lost
+  glm::dvec3 escapedPower{0};      // left the scene (hemisphere pixels that saw nothing)
+};
+
+struct Shooter {
+  uint32_t patch = 0;              // global patch index
+  uint32_t surface = 0;
+  glm::dvec3 unshotPower{0};       // pi x unshot radiance x patch area
+};
+
+// One shot, kept so later work can gather from what has been shot or re-shoot a difference.
+struct ShotRecord {
+  uint32_t patch = 0;
+  glm::dvec3 radiance{0};          // unshot radiance that was shot
+};
+
+class Solver {
+ public:
+  // Copies the surfaces' geometry and materials; each element starts at its emission, each
+  // patch's unshot radiance is its emission. Throws std::invalid_argument for an element with
+  // a corner index outside its surface's vertices, fewer than 3 corners, zero area, or a patch
+  // grouping of the wrong size; and what pxpl5::HemisphereRenderer throws for the settings.
+  Solver(std::span<const Surface> surfaces, const SolverSettings& settings = {});
+  ~Solver();
+  Solver(const Solver&) = delete;
+  Solver& operator=(const Solver&) = delete;
+
+  // The patch with the largest unshot power (sum of channels; ties go to the lowest index), or
+  // nothing when no patch has any.
+  std::optional<Shooter> nextShooter() const;
+
+  // Shoots nextShooter()'s unshot light: a hemisphere frame at the patch's centre over every
+  // element, near and small receivers corrected (see solver.cpp), and the reflected part
+  // deposited as radiance on each receiver and as unshot light on its patch. Returns false and
+  // does nothing when there is nothing left to shoot.
+  bool step();
+
+  // Unshot power over emitted power, summed over channels; 0 for a scene that emits nothing.
+  double unshotFraction() const;
+  bool converged(double fraction) const { return unshotFraction() <= fraction; }
+
+  // Steps until converged(fraction) or `maxShots` shots in this call. Returns the shots taken.
+  uint64_t solve(double fraction, uint64_t maxShots = UINT64_MAX);
+
+  // Per element of `surface`, its radiance so far (light shot to it plus its emission), without
+  // the ambient term.
+  std::span<const glm::dvec3> elementRadiance(uint32_t surface) const;
+
+  // The ambient term (radiosity/ambient.h) of the light not yet shot.
+  glm::dvec3 ambient() const;
+
+  // Per vertex of `surface`: the area-weighted mean radiance of the elements of that surface
+  // around it (thesis 2.4), so Gouraud shading is continuous within a surface. With
+  // `withAmbient`, reflectance x ambient() is added (the display's estimate before
+  // convergence). Vertices used by no element get 0.
+  std::vector<glm::dvec3> vertexRadiance(uint32_t surface, bool withAmbient) const;
+
+  const Stats& stats() const;
+  std::span<const ShotRecord> shotHistory() const;
+  size_t surfaceCount() const;
+  size_t elementCount() const;
+  size_t patchCount() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace radiosity

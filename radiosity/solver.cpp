@@ -1,0 +1,414 @@
+// Progressive-refinement shooting (Cohen, Chen, Wallace, Greenberg 1988).
+//
+// Sections: setup | receivers of one shot | Solver.
+//
+// One shot of patch p with unshot radiance dB (area A_p): a hemisphere frame at p's centre gives
+// the form factor F_pj to every element j by pixel counts, then two kinds of receiver get better
+// factors:
+//  - Near receivers (closer than nearFieldRatio x p's radius): the centre's factor is off by
+//    about (radius / distance)^2, 20% for two unit squares a unit apart. Their factor is
+//    integrated over p's area (form_factors.h: p's elements split until each piece is small
+//    for its distance, Lambert's formula from each piece's centre), times their visibility from
+//    the centre's frame.
+//  - Small receivers (factor under smallReceiverPixels pixels): a pixel is either wholly theirs
+//    or not, so their count is off by up to a pixel, which for a tiny element is all of it. Their
+//    factor is Lambert's formula from the centre times their visibility read from the item
+//    buffer at a few points. This is what lets elements of very different areas sit side by
+//    side (the UNC program's failure, thesis chapter 6): a small element gets the light its
+//    solid angle says, not a random number of pixels.
+// The new factors differ from the pixel counts they replace by some total D. The frame saw
+// every direction once (pixel weights sum to 1), so energy is kept by taking D from everything
+// else the centre saw, the sky included, in proportion: the shot's factors plus what escapes
+// still sum to 1. (Where the rest is too small for that, everything is scaled to sum to 1.)
+// Each receiver j whose front faces the shooter then gets dB_j = rho_j dB F_pj A_p / A_j: the
+// reciprocity relation F_jp = F_pj A_p / A_j turns the shooter's factor into the receiver's
+// (leaving out A_p / A_j is the UNC program's other failure). dB_j is added to j's radiance and,
+// as unshot light, to j's patch, weighted by j's share of the patch's area.
+#include "radiosity/radiosity.h"
+
+#include "radiosity/ambient.h"
+#include "radiosity/form_factors.h"
+#include "radiosity/item_buffer.h"
+
+#include "pxpl5/hemisphere.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace radiosity {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double channelSum(const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
+
+// A visibility ratio of pixels to the analytic factor this close to 1 is an unoccluded receiver
+// whose pixel count is a little short (its edges cut pixels), not a shadow.
+constexpr double kUnoccludedRatio = 0.95;
+
+bool insideConvex(const Polygon3& p, const glm::dvec3& normal, const glm::dvec3& q) {
+  for (int k = 0; k < p.n; ++k) {
+    const glm::dvec3 a = p.v[k], b = p.v[(k + 1) % p.n];
+    const double scale = glm::length(b - a) * glm::length(q - a);
+    if (glm::dot(glm::cross(b - a, q - a), normal) < -1e-12 * scale) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+struct Solver::State {
+  SolverSettings settings;
+  pxpl5::HemisphereRenderer renderer;
+
+  struct SurfaceData {
+    uint32_t firstElement = 0, elementCount = 0;
+    uint32_t firstPatch = 0, patchCount = 0;
+    glm::dvec3 normal{0}, reflectance{0}, emission{0};
+    std::vector<std::array<uint32_t, 4>> corners;
+    size_t vertexCount = 0;
+  };
+  std::vector<SurfaceData> surfaces;
+
+  // Per element (global index = the pxpl5 polygon index and id).
+  std::vector<Polygon3> polygon;
+  std::vector<glm::dvec3> centre, normal, radiance;
+  std::vector<double> radius, area, offset;
+  std::vector<uint32_t> surfaceOf, patchOf;
+
+  // Per patch; its elements are patchElements[patchFirst[p], patchFirst[p + 1]).
+  std::vector<uint32_t> patchFirst, patchElements, patchSurface;
+  std::vector<glm::dvec3> patchCentre, unshot, shot;
+  std::vector<double> patchArea, patchRadius;
+
+  std::vector<glm::vec3> soupVertices;
+  std::vector<pxpl5::Polygon> soupPolygons;
+
+  // Scratch of one shot, sized once.
+  std::vector<double> pixelFactor;
+  std::vector<uint8_t> replaced;
+  struct NewFactor {
+    uint32_t element;
+    double front, back;
+  };
+  std::vector<NewFactor> newFactors;
+  std::vector<glm::dvec3> targets;
+
+  double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
+  Stats stats;
+  std::vector<ShotRecord> history;
+
+  explicit State(const SolverSettings& s)
+      : settings(s), renderer(pxpl5::HemisphereSettings{s.resolution, pxpl5::Projection::kHemisphere, s.graphicsProcessors}) {}
+
+  void build(std::span<const Surface> input);
+  double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
+                    const glm::dvec3& eyeNormal, uint32_t j);
+  void shoot(uint32_t p);
+};
+
+// ---- setup -----------------------------------------------------------------------------------
+
+void Solver::State::build(std::span<const Surface> input) {
+  size_t elementTotal = 0;
+  for (const Surface& s : input) elementTotal += s.elements.size();
+  polygon.reserve(elementTotal);
+  soupVertices.reserve(elementTotal * 4);
+  soupPolygons.reserve(elementTotal);
+
+  std::vector<std::vector<uint32_t>> members;  // per global patch, its elements
+  for (size_t si = 0; si < input.size(); ++si) {
+    const Surface& in = input[si];
+    const std::string where = "radiosity::Solver: surface " + std::to_string(si);
+    if (!in.patchOfElement.empty() && in.patchOfElement.size() != in.elements.size())
+      throw std::invalid_argument(where + ": patchOfElement has the wrong size");
+    SurfaceData& s = surfaces.emplace_back();
+    s.firstElement = static_cast<uint32_t>(polygon.size());
+    s.elementCount = static_cast<uint32_t>(in.elements.size());
+    s.firstPatch = static_cast<uint32_t>(members.size());
+    s.normal = glm::normalize(in.normal);
+    s.reflectance = glm::clamp(in.reflectance, 0.0, 1.0);
+    s.emission = in.emission;
+    s.corners = in.elements;
+    s.vertexCount = in.vertices.size();
+    uint32_t patches = 0;
+    for (size_t e = 0; e < in.elements.size(); ++e) {
+      const std::array<uint32_t, 4>& c = in.elements[e];
+      Polygon3 p;
+      p.n = c[3] == kNone ? 3 : 4;
+      for (int k = 0; k < p.n; ++k) {
+        if (c[k] >= in.vertices.size())
+          throw std::invalid_argument(where + ", element " + std::to_string(e) + ": corner index out of range");
+        p.v[k] = in.vertices[c[k]];
+      }
+      const double a = polygonArea(p);
+      if (!(a > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
+      const glm::dvec3 m = polygonCentroid(p);
+      double r = 0;
+      for (int k = 0; k < p.n; ++k) r = std::max(r, glm::length(p.v[k] - m));
+      const uint32_t j = static_cast<uint32_t>(polygon.size());
+      polygon.push_back(p);
+      centre.push_back(m);
+      normal.push_back(s.normal);
+      offset.push_back(glm::dot(s.normal, m));
+      radius.push_back(r);
+      area.push_back(a);
+      surfaceOf.push_back(static_cast<uint32_t>(si));
+      radiance.push_back(s.emission);
+      const uint32_t local = in.patchOfElement.empty() ? static_cast<uint32_t>(e) : in.patchOfElement[e];
+      patches = std::max(patches, local + 1);
+      if (members.size() < s.firstPatch + patches) members.resize(s.firstPatch + patches);
+      members[s.firstPatch + local].push_back(j);
+      patchOf.push_back(s.firstPatch + local);
+      soupPolygons.push_back({static_cast<uint32_t>(soupVertices.size()), static_cast<uint32_t>(p.n), j});
+      for (int k = 0; k < p.n; ++k) soupVertices.emplace_back(p.v[k]);
+    }
+    s.patchCount = patches;
+  }
+
+  // Patches: area, the centre they shoot from, their radius; unshot light starts as emission.
+  const size_t patchTotal = members.size();
+  patchFirst.assign(1, 0);
+  for (size_t p = 0; p < patchTotal; ++p) {
+    if (members[p].empty()) throw std::invalid_argument("radiosity::Solver: patch " + std::to_string(p) + " has no elements");
+    patchElements.insert(patchElements.end(), members[p].begin(), members[p].end());
+    patchFirst.push_back(static_cast<uint32_t>(patchElements.size()));
+    const uint32_t si = surfaceOf[members[p].front()];
+    double a = 0;
+    glm::dvec3 c{0};
+    for (uint32_t e : members[p]) a += area[e], c += area[e] * centre[e];
+    c /= a;
+    // A patch bent around a hole may have its centroid outside itself: shoot from its element
+    // nearest the centroid instead.
+    bool inside = false;
+    for (uint32_t e : members[p]) inside = inside || insideConvex(polygon[e], normal[e], c);
+    if (!inside) {
+      uint32_t nearest = members[p].front();
+      for (uint32_t e : members[p])
+        if (glm::length(centre[e] - c) < glm::length(centre[nearest] - c)) nearest = e;
+      c = centre[nearest];
+    }
+    double r = 0;
+    for (uint32_t e : members[p])
+      for (int k = 0; k < polygon[e].n; ++k) r = std::max(r, glm::length(polygon[e].v[k] - c));
+    patchSurface.push_back(si);
+    patchArea.push_back(a);
+    patchCentre.push_back(c);
+    patchRadius.push_back(r);
+    unshot.push_back(surfaces[si].emission);
+    shot.emplace_back(0.0);
+    stats.emittedPower += kPi * surfaces[si].emission * a;
+  }
+
+  pixelFactor.assign(polygon.size(), 0.0);
+  replaced.assign(polygon.size(), 0);
+  newFactors.reserve(polygon.size());
+}
+
+// ---- receivers of one shot ---------------------------------------------------------------------
+
+// Visibility of element j from the frame's centre: the pixel count over Lambert's unoccluded
+// factor where j is big enough to own pixels, else the item buffer at its centroid and at points
+// a quarter of the way in from each corner.
+double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
+                                 const glm::dvec3& eyeNormal, uint32_t j) {
+  const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
+  if (unoccluded >= settings.smallReceiverPixels * pixelShare) {
+    const double ratio = pixelFactor[j] / unoccluded;
+    return ratio >= kUnoccludedRatio ? 1.0 : ratio;
+  }
+  targets.clear();
+  targets.push_back(centre[j]);
+  for (int k = 0; k < polygon[j].n; ++k) targets.push_back(polygon[j].v[k] + 0.25 * (centre[j] - polygon[j].v[k]));
+  return itemBufferVisibility(frame, axes, eye, targets, j, {normal, offset, surfaceOf});
+}
+
+void Solver::State::shoot(uint32_t p) {
+  const uint32_t si = patchSurface[p];
+  const glm::dvec3 dB = unshot[p];
+  unshot[p] = glm::dvec3(0);
+  shot[p] += dB;
+  history.push_back({p, dB});
+  const glm::dvec3 power = kPi * dB * patchArea[p];
+  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
+
+  // The frame: every element but the shooter's own.
+  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
+  const pxpl5::HemisphereFrame& frame =
+      renderer.render({glm::vec3(eye), glm::vec3(eyeNormal), own}, {soupVertices, soupPolygons});
+  ++stats.frames;
+  if (pixelShare == 0) pixelShare = frame.weights[static_cast<size_t>(frame.height / 2) * frame.stride + frame.width / 2];
+  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = f.factor;
+  const HemisphereAxes axes = hemisphereAxes(glm::vec3(eyeNormal));
+
+  // Near and small receivers get new factors.
+  newFactors.clear();
+  double replacedPixels = 0, replacedNew = 0;
+  const double nearLimit = settings.nearFieldRatio * patchRadius[p];
+  const double smallLimit = settings.smallReceiverPixels * pixelShare;
+  for (uint32_t j = 0; j < polygon.size(); ++j) {
+    if (surfaceOf[j] == si) continue;                                  // a plane does not see itself
+    const glm::dvec3 toward = centre[j] - eye;
+    if (glm::dot(toward, eyeNormal) < -radius[j]) continue;            // wholly below the horizon
+    const double gap = glm::length(toward) - radius[j];
+    NewFactor f{j, 0, 0};
+    if (gap < nearLimit) {
+      const Receiver r{polygon[j], centre[j], radius[j], normal[j], offset[j]};
+      for (uint32_t k = patchFirst[p]; k < patchFirst[p + 1]; ++k) {
+        const uint32_t e = patchElements[k];
+        areaToPolygon(polygon[e], area[e] / patchArea[p], eyeNormal, r, settings.pieceRatio, settings.maxShooterSplits,
+                      f.front, f.back);
+      }
+      if (f.front + f.back > 0) {
+        const double v = visibility(frame, axes, eye, eyeNormal, j);
+        f.front *= v, f.back *= v;
+      }
+      ++stats.nearReceivers;
+    } else {
+      // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
+      if (area[j] >= smallLimit * kPi * gap * gap) continue;
+      const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
+      if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
+      const double v = unoccluded > 0 ? visibility(frame, axes, eye, eyeNormal, j) : 0;
+      (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = unoccluded * v;
+      ++stats.smallReceivers;
+    }
+    replaced[j] = 1;
+    replacedPixels += pixelFactor[j];
+    replacedNew += f.front + f.back;
+    newFactors.push_back(f);
+  }
+
+  // Keep the energy: the difference comes out of everything else the centre saw, sky included,
+  // when that is plenty (more than ten times the difference). Where nearly everything is new
+  // (a small closed room, all of it near) that cannot work; then all factors and the sky are
+  // scaled to sum to 1, which keeps the near factors' proportions.
+  double kept = 0;
+  for (const pxpl5::IdFactor& f : frame.factors)
+    if (!replaced[f.id]) kept += f.factor;
+  const double sky = std::max(0.0, 1.0 - frame.total), difference = replacedNew - replacedPixels;
+  double scale = 1, newScale = 1;
+  if (kept + sky >= 10 * std::abs(difference)) {
+    if (kept + sky > 0) scale = (kept + sky - difference) / (kept + sky);
+  } else {
+    scale = newScale = 1.0 / (kept + sky + replacedNew);
+    ++stats.renormalisedShots;
+  }
+  for (NewFactor& f : newFactors) f.front *= newScale, f.back *= newScale;
+
+  // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
+  const auto deposit = [&](uint32_t j, double front, double back) {
+    if (front > 0) {
+      const glm::dvec3& rho = surfaces[surfaceOf[j]].reflectance;
+      const glm::dvec3 gained = rho * dB * (front * patchArea[p] / area[j]);
+      radiance[j] += gained;
+      unshot[patchOf[j]] += gained * (area[j] / patchArea[patchOf[j]]);
+      stats.absorbedPower += (1.0 - rho) * power * front;
+    }
+    stats.backPower += power * back;
+  };
+  for (const pxpl5::IdFactor& f : frame.factors) {
+    if (replaced[f.id]) continue;
+    const double factor = f.factor * scale;
+    if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, 0);
+    else deposit(f.id, 0, factor);
+  }
+  for (const NewFactor& f : newFactors) deposit(f.element, f.front, f.back);
+  stats.escapedPower += power * (sky * scale);
+
+  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = 0;
+  for (const NewFactor& f : newFactors) replaced[f.element] = 0;
+}
+
+// ---- Solver --------------------------------------------------------------------------------------
+
+Solver::Solver(std::span<const Surface> surfaces, const SolverSettings& settings)
+    : state_(std::make_unique<State>(settings)) {
+  state_->build(surfaces);
+}
+
+Solver::~Solver() = default;
+
+std::optional<Shooter> Solver::nextShooter() const {
+  const State& s = *state_;
+  double best = 0;
+  std::optional<Shooter> next;
+  for (uint32_t p = 0; p < s.unshot.size(); ++p) {
+    const double power = channelSum(s.unshot[p]) * s.patchArea[p];
+    if (power > best) best = power, next = Shooter{p, s.patchSurface[p], kPi * s.unshot[p] * s.patchArea[p]};
+  }
+  return next;
+}
+
+bool Solver::step() {
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<Shooter> next = nextShooter();
+  if (!next) return false;
+  state_->shoot(next->patch);
+  ++state_->stats.shots;
+  state_->stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
+double Solver::unshotFraction() const {
+  const State& s = *state_;
+  const double emitted = channelSum(s.stats.emittedPower);
+  if (emitted <= 0) return 0;
+  double unshotPower = 0;
+  for (size_t p = 0; p < s.unshot.size(); ++p) unshotPower += kPi * channelSum(s.unshot[p]) * s.patchArea[p];
+  return unshotPower / emitted;
+}
+
+uint64_t Solver::solve(double fraction, uint64_t maxShots) {
+  uint64_t shots = 0;
+  while (shots < maxShots && !converged(fraction) && step()) ++shots;
+  return shots;
+}
+
+std::span<const glm::dvec3> Solver::elementRadiance(uint32_t surface) const {
+  const State::SurfaceData& s = state_->surfaces.at(surface);
+  return {state_->radiance.data() + s.firstElement, s.elementCount};
+}
+
+glm::dvec3 Solver::ambient() const {
+  const State& s = *state_;
+  std::vector<SurfaceLight> lights;
+  lights.reserve(s.unshot.size());
+  for (size_t p = 0; p < s.unshot.size(); ++p)
+    lights.push_back({s.patchArea[p], s.surfaces[s.patchSurface[p]].reflectance, s.unshot[p]});
+  return ambientRadiance(lights);
+}
+
+std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, bool withAmbient) const {
+  const State& st = *state_;
+  const State::SurfaceData& s = st.surfaces.at(surface);
+  std::vector<glm::dvec3> sum(s.vertexCount, glm::dvec3(0));
+  std::vector<double> weight(s.vertexCount, 0.0);
+  for (uint32_t e = 0; e < s.elementCount; ++e) {
+    const uint32_t j = s.firstElement + e;
+    for (int k = 0; k < st.polygon[j].n; ++k) {
+      sum[s.corners[e][k]] += st.area[j] * st.radiance[j];
+      weight[s.corners[e][k]] += st.area[j];
+    }
+  }
+  const glm::dvec3 extra = withAmbient ? s.reflectance * ambient() : glm::dvec3(0);
+  for (size_t v = 0; v < sum.size(); ++v)
+    if (weight[v] > 0) sum[v] = sum[v] / weight[v] + extra;
+  return sum;
+}
+
+const Stats& Solver::stats() const { return state_->stats; }
+std::span<const ShotRecord> Solver::shotHistory() const { return state_->history; }
+size_t Solver::surfaceCount() const { return state_->surfaces.size(); }
+size_t Solver::elementCount() const { return state_->polygon.size(); }
+size_t Solver::patchCount() const { return state_->unshot.size(); }
+
+}  // namespace radiosity

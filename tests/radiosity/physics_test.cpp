@@ -1,0 +1,197 @@
+// The solver against closed forms and conservation laws: the furnace, two pairs of unit squares
+// with known form factors, energy balance in a closed and an open box, reciprocity.
+#include "radiosity/radiosity.h"
+
+#include "tests/radiosity/scenes.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace radiosity {
+namespace {
+
+using test::area;
+using test::areaTimesRadiance;
+using test::closedBox;
+using test::rectangle;
+
+constexpr double kPi = std::numbers::pi;
+
+void groupAll(std::vector<Surface>& surfaces, double patchEdge) {
+  for (Surface& s : surfaces) s.patchOfElement = groupIntoPatches(s, patchEdge);
+}
+
+// A closed box of one material: the radiance is E / (1 - rho) everywhere, on every element and
+// every vertex, and nothing escapes.
+void expectFurnace(double patchEdge) {
+  const glm::dvec3 rho{0.5, 0.25, 0.8}, emission{1, 2, 0.5};
+  std::vector<Surface> box = closedBox(1, 0.25, rho, emission);
+  if (patchEdge > 0) groupAll(box, patchEdge);
+  Solver solver(box);
+  solver.solve(1e-7);
+  const glm::dvec3 exact = emission / (1.0 - rho);
+  double worst = 0;
+  for (uint32_t s = 0; s < box.size(); ++s) {
+    for (const glm::dvec3& b : solver.elementRadiance(s))
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(b[c] / exact[c] - 1));
+    for (const glm::dvec3& b : solver.vertexRadiance(s, true))
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(b[c] / exact[c] - 1));
+  }
+  std::printf("furnace (patches %g): %llu shots, worst relative error %.2e, escaped %.2e of emitted\n", patchEdge,
+              static_cast<unsigned long long>(solver.stats().shots), worst,
+              solver.stats().escapedPower.x / solver.stats().emittedPower.x);
+  EXPECT_LT(worst, 1e-3);
+  EXPECT_LT(solver.stats().escapedPower.x, 1e-9 * solver.stats().emittedPower.x);
+}
+
+TEST(RadiosityPhysics, FurnaceElementsShootAlone) { expectFurnace(0); }
+TEST(RadiosityPhysics, FurnaceWithShootingPatches) { expectFurnace(0.5); }
+
+// Before convergence the ambient term stands in for the light not yet shot; in a furnace it is
+// exact once the unshot light is spread evenly, which it is before the first shot.
+TEST(RadiosityPhysics, FurnaceAmbientBeforeAnyShot) {
+  const glm::dvec3 rho{0.5}, emission{1};
+  const std::vector<Surface> box = closedBox(1, 0.5, rho, emission);
+  Solver solver(box);
+  for (const glm::dvec3& b : solver.vertexRadiance(0, true)) EXPECT_NEAR(b.x, 2.0, 1e-12);
+}
+
+// The form factor from an emitter to a receiver, through the whole pipeline: the emitter does not
+// reflect, so the receiver's reflected power is rho x emission x A_e x F_er.
+double factorThroughSolver(const Surface& emitter, const Surface& receiver, double patchEdge) {
+  std::vector<Surface> scene{emitter, receiver};
+  if (patchEdge > 0) groupAll(scene, patchEdge);
+  Solver solver(scene);
+  solver.solve(0);
+  double emitterArea = 0;
+  for (uint32_t e = 0; e < emitter.elements.size(); ++e) emitterArea += area(emitter, e);
+  return areaTimesRadiance(solver, receiver, 1).x / (receiver.reflectance.x * emitter.emission.x * emitterArea);
+}
+
+struct SquaresCase {
+  double elementSize;
+  double patchEdge;  // 0: elements shoot alone
+};
+
+class RadiositySquares : public ::testing::TestWithParam<SquaresCase> {};
+
+// Two unit squares facing each other a unit apart: F = 0.19982 (Siegel and Howell).
+TEST_P(RadiositySquares, Opposed) {
+  const SquaresCase c = GetParam();
+  const Surface emitter = rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, c.elementSize, glm::dvec3(0), glm::dvec3(1));
+  const Surface receiver = rectangle({0, 0, 1}, {0, 1, 0}, {1, 0, 0}, c.elementSize, glm::dvec3(0.5));
+  const double f = factorThroughSolver(emitter, receiver, c.patchEdge);
+  std::printf("opposed squares, elements %g, patches %g: F = %.5f (exact 0.19982, %+.2f%%)\n", c.elementSize,
+              c.patchEdge, f, 100 * (f / 0.19982 - 1));
+  EXPECT_NEAR(f, 0.19982, 0.01 * 0.19982);
+}
+
+// Two unit squares at a right angle sharing an edge: F = 0.20004.
+TEST_P(RadiositySquares, Perpendicular) {
+  const SquaresCase c = GetParam();
+  const Surface emitter = rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, c.elementSize, glm::dvec3(0), glm::dvec3(1));
+  const Surface receiver = rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, c.elementSize, glm::dvec3(0.5));
+  const double f = factorThroughSolver(emitter, receiver, c.patchEdge);
+  std::printf("perpendicular squares, elements %g, patches %g: F = %.5f (exact 0.20004, %+.2f%%)\n", c.elementSize,
+              c.patchEdge, f, 100 * (f / 0.20004 - 1));
+  EXPECT_NEAR(f, 0.20004, 0.01 * 0.20004);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, RadiositySquares,
+                         ::testing::Values(SquaresCase{1, 0}, SquaresCase{0.25, 0}, SquaresCase{0.25, 0.5},
+                                           SquaresCase{0.125, 1}));
+
+// Every watt emitted is absorbed by the front of an element, arrives at the back of one, escapes
+// or is still unshot. The absorbed power is computed here from the element radiances alone:
+// an element of reflectance rho that reflects radiance B - E absorbed pi (B - E) A (1 - rho) / rho.
+struct Balance {
+  double emitted, absorbed, back, escaped, unshot;
+};
+
+Balance balanceOf(const std::vector<Surface>& scene, double convergence) {
+  Solver solver(scene);
+  solver.solve(convergence);
+  Balance b{};
+  const Stats& s = solver.stats();
+  const auto sum = [](glm::dvec3 v) { return v.x + v.y + v.z; };
+  b.emitted = sum(s.emittedPower);
+  b.back = sum(s.backPower);
+  b.escaped = sum(s.escapedPower);
+  b.unshot = solver.unshotFraction() * b.emitted;
+  for (uint32_t i = 0; i < scene.size(); ++i) {
+    const std::span<const glm::dvec3> radiance = solver.elementRadiance(i);
+    for (uint32_t e = 0; e < scene[i].elements.size(); ++e)
+      b.absorbed += sum(kPi * (radiance[e] - scene[i].emission) * area(scene[i], e) * (1.0 - scene[i].reflectance) /
+                        scene[i].reflectance);
+  }
+  return b;
+}
+
+std::vector<Surface> litBox(bool open, double blackReflectance) {
+  std::vector<Surface> box = closedBox(1, 0.2, glm::dvec3(0.6, 0.5, 0.4), glm::dvec3(0));
+  box[2].reflectance = {0.3, 0.7, 0.2};
+  box[4].reflectance = {0.8, 0.2, 0.2};
+  // A lamp under the ceiling, facing down.
+  box.push_back(rectangle({0.4, 0.4, 0.999}, {0, 0.2, 0}, {0.2, 0, 0}, 0.1, glm::dvec3(0.5), {10, 8, 6}));
+  if (open) box.erase(box.begin() + 5);
+  else box[5].reflectance = glm::dvec3(blackReflectance);
+  return box;
+}
+
+TEST(RadiosityPhysics, EnergyBalanceClosedBox) {
+  const Balance b = balanceOf(litBox(false, 0.6), 1e-6);
+  const double residual = (b.emitted - b.absorbed - b.back - b.escaped - b.unshot) / b.emitted;
+  std::printf("closed box: emitted %.6f absorbed %.6f back %.2e escaped %.2e unshot %.2e residual %.2e\n", b.emitted,
+              b.absorbed, b.back, b.escaped, b.unshot, residual);
+  EXPECT_LT(std::abs(residual), 1e-9);
+  EXPECT_LT(b.escaped, 1e-9 * b.emitted);
+}
+
+// With one side open some light escapes, and it is what a nearly black wall put there absorbs.
+TEST(RadiosityPhysics, EnergyBalanceOpenBox) {
+  const Balance open = balanceOf(litBox(true, 0), 1e-6);
+  const double residual = (open.emitted - open.absorbed - open.back - open.escaped - open.unshot) / open.emitted;
+  std::printf("open box: emitted %.6f absorbed %.6f back %.2e escaped %.6f unshot %.2e residual %.2e\n", open.emitted,
+              open.absorbed, open.back, open.escaped, open.unshot, residual);
+  EXPECT_LT(std::abs(residual), 1e-9);
+
+  const std::vector<Surface> closed = litBox(false, 1e-3);
+  Solver solver(closed);
+  solver.solve(1e-6);
+  const glm::dvec3 reflected = kPi * areaTimesRadiance(solver, closed[5], 5);
+  const double sink = (reflected.x + reflected.y + reflected.z) * (1 - 1e-3) / 1e-3;
+  std::printf("open box: escaped %.6f, absorbed by a black wall in the opening %.6f (%+.2f%%)\n", open.escaped, sink,
+              100 * (open.escaped / sink - 1));
+  EXPECT_GT(open.escaped, 0.05 * open.emitted);
+  EXPECT_NEAR(open.escaped, sink, 0.01 * sink);
+}
+
+// A_i F_ij = A_j F_ji for two unequal, tilted rectangles: i lit by j and j lit by i.
+TEST(RadiosityPhysics, Reciprocity) {
+  const auto make = [](bool iEmits) {
+    Surface i = rectangle({0, 0, 0}, {1, 0, 0}, {0, 2, 0}, 0.25, glm::dvec3(iEmits ? 0 : 0.5), glm::dvec3(iEmits ? 1 : 0));
+    Surface j = rectangle({1.0, 0.3, 1.0}, {0, 0.8, 0}, {0.6, 0, -0.25}, 0.2, glm::dvec3(iEmits ? 0.5 : 0),
+                          glm::dvec3(iEmits ? 0 : 1));
+    return std::vector<Surface>{i, j};
+  };
+  const std::vector<Surface> a = make(true), b = make(false);
+  Solver fromI(a), fromJ(b);
+  fromI.solve(0);
+  fromJ.solve(0);
+  double areaI = 0, areaJ = 0;
+  for (uint32_t e = 0; e < a[0].elements.size(); ++e) areaI += area(a[0], e);
+  for (uint32_t e = 0; e < a[1].elements.size(); ++e) areaJ += area(a[1], e);
+  const double fij = areaTimesRadiance(fromI, a[1], 1).x / (0.5 * areaI);
+  const double fji = areaTimesRadiance(fromJ, b[0], 0).x / (0.5 * areaJ);
+  std::printf("reciprocity: A_i F_ij = %.6f, A_j F_ji = %.6f (%+.3f%%)\n", areaI * fij, areaJ * fji,
+              100 * (areaI * fij / (areaJ * fji) - 1));
+  EXPECT_GT(fij, 0.01);
+  EXPECT_NEAR(areaI * fij, areaJ * fji, 0.01 * areaJ * fji);
+}
+
+}  // namespace
+}  // namespace radiosity
