@@ -148,8 +148,10 @@ void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
   const LeafRegion& leaf = region(q);
   if (leaf.ring.empty()) return;
   const Vec2 inner = leaf.inner;
+  const size_t n = ring_.size();
   const std::vector<RingElement>* elements = &pieces_;
-  if (leaf.templateKey >= 0) {
+  const bool fromTemplate = leaf.templateKey >= 0;
+  if (fromTemplate) {
     const auto key = static_cast<size_t>(leaf.templateKey);
     if (!haveTemplate_[key]) {
       templates_[key].clear();
@@ -159,24 +161,22 @@ void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
     elements = &templates_[key];
   } else {
     pieces_.clear();
-    subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_);
+    subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_, leaf.pathPoints);
   }
-  const size_t innerIndex = ring_.size();
-  uint32_t innerId = Mesh::kNone;
+  // Ring points have their ids; the inner point and points added on the boundary are this
+  // leaf's own (a template's indices are the ring's, then the inner point).
+  auto idOf = [&](uint32_t index) {
+    const int ringIndex = fromTemplate ? (index < n ? static_cast<int>(index) : -1) : subdomains_.ringIndexOf(index);
+    if (ringIndex >= 0) return ringIds_[static_cast<size_t>(ringIndex)];
+    const Vec2 at = fromTemplate ? inner : subdomains_.points()[index];
+    bool added;
+    const uint32_t id = ids_->findOrAdd(at, added);
+    if (added) vertices_.push_back(built_.frame.toPlane(at));
+    return id;
+  };
   for (const RingElement& piece : *elements) {
     std::array<uint32_t, 4> element{Mesh::kNone, Mesh::kNone, Mesh::kNone, Mesh::kNone};
-    for (uint8_t k = 0; k < piece.count; ++k) {
-      if (piece.v[k] != innerIndex) {
-        element[k] = ringIds_[piece.v[k]];
-        continue;
-      }
-      if (innerId == Mesh::kNone) {
-        bool added;
-        innerId = ids_->findOrAdd(inner, added);
-        if (added) vertices_.push_back(built_.frame.toPlane(inner));
-      }
-      element[k] = innerId;
-    }
+    for (uint8_t k = 0; k < piece.count; ++k) element[k] = idOf(piece.v[k]);
     out.push_back(element);
   }
 }

@@ -80,6 +80,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
   LeafRegion& region = region_;
   region.ring.clear();
   region.hinge = -1;
+  region.pathPoints = 0;
   region.templateKey = -1;
   const Quadrant& leaf = tree[q];
   if (leaf.status == QuadStatus::Outside) return region;
@@ -181,20 +182,24 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
   // Drop points repeated next to each other (a crossing on a corner, the vertex on the border).
   std::vector<RegionPoint>& ring = ring_;
   ring.clear();
-  for (const RegionPoint& p : region.ring) {
+  for (size_t i = 0; i < region.ring.size(); ++i) {
+    const RegionPoint& p = region.ring[i];
     if (!ring.empty() && ring.back().at == p.at) {
       if (p.inputVertex >= 0) ring.back() = p;
       continue;
     }
     ring.push_back(p);
+    if (i < path.size()) region.pathPoints = ring.size();
   }
   while (ring.size() > 1 && ring.front().at == ring.back().at) {
     if (ring.back().inputVertex >= 0) ring.front() = ring.back();
     ring.pop_back();
   }
+  region.pathPoints = std::min(region.pathPoints, ring.size());
   region.ring.swap(ring);
   if (region.ring.size() < 3) {
     region.ring.clear();
+    region.pathPoints = 0;
     return region;
   }
   for (size_t i = 0; i < region.ring.size(); ++i)

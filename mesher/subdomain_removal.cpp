@@ -149,11 +149,7 @@ double SubdomainRemover::score() const {
   return worst;
 }
 
-void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                            std::vector<RingElement>& out) {
-  const size_t n = ring.size();
-  points_.assign(ring.begin(), ring.end());
-  if (inner) points_.push_back(*inner);
+double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale) {
   // Angles are judged with the ring scaled to its true proportions.
   shaped_.assign(points_.begin(), points_.end());
   for (Vec2& p : shaped_) p *= shapeScale;
@@ -199,13 +195,77 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   if (preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)));
   for (size_t h = 0; h < n && !done(); ++h)
     if (static_cast<int>(h) != preferredHinge) consider(fanFromHinge(points_, n, h));
-  if (inner)
+  if (hasInner)
     for (size_t start = 0; start < n && !done(); ++start) consider(fanFromInside(points_, n, start));
+  return bestScore;
+}
+
+void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                            std::vector<RingElement>& out, size_t boundaryPoints) {
+  const size_t n = ring.size();
+  points_.assign(ring.begin(), ring.end());
+  if (inner) points_.push_back(*inner);
+  origin_.resize(points_.size());
+  for (size_t i = 0; i < points_.size(); ++i) origin_[i] = i < n ? static_cast<int>(i) : -1;
+  const double plain = search(n, preferredHinge, inner != nullptr, shapeScale);
+
+  // Falling short, the ring may gain points on its stretch of the polygon's boundary (nothing
+  // lies across it, so they make no T-vertex): the feet of the other ring points, so that a
+  // thin strip along an edge splits into pieces across it instead of slivers along it.
+  if (plain < 1 && boundaryPoints >= 2 && augment(n, boundaryPoints, inner, shapeScale)) {
+    kept_.swap(best_);
+    const size_t m = points_.size() - (inner ? 1 : 0);
+    int hinge = -1;
+    for (size_t i = 0; i < m && preferredHinge >= 0; ++i)
+      if (origin_[i] == preferredHinge) hinge = static_cast<int>(i);
+    const double augmented = search(m, hinge, inner != nullptr, shapeScale);
+    if (augmented >= 1 || augmented > plain + 0.05) {
+      out.insert(out.end(), best_.begin(), best_.end());
+      return;
+    }
+    // Not better: back to the plain ring.
+    best_.swap(kept_);
+    points_.assign(ring.begin(), ring.end());
+    if (inner) points_.push_back(*inner);
+    origin_.resize(points_.size());
+    for (size_t i = 0; i < points_.size(); ++i) origin_[i] = i < n ? static_cast<int>(i) : -1;
+  }
   if (!best_.empty()) {
     out.insert(out.end(), best_.begin(), best_.end());
     return;
   }
   earClipAndMerge(ring, out);
+}
+
+bool SubdomainRemover::augment(size_t n, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale) {
+  const std::vector<Vec2> ring(points_.begin(), points_.begin() + static_cast<std::ptrdiff_t>(n));
+  points_.clear();
+  origin_.clear();
+  bool added = false;
+  std::vector<double>& feet = feet_;
+  for (size_t i = 0; i < n; ++i) {
+    points_.push_back(ring[i]);
+    origin_.push_back(static_cast<int>(i));
+    if (i + 1 >= boundaryPoints) continue;
+    // Feet on the boundary edge ring[i] -> ring[i + 1], judged in true proportions.
+    const Vec2 a = ring[i] * shapeScale, ab = ring[i + 1] * shapeScale - a;
+    const double length2 = glm::dot(ab, ab);
+    feet.clear();
+    for (size_t j = 0; j < n; ++j) {
+      if (j == i || j == i + 1 || length2 == 0) continue;
+      const double t = glm::dot(ring[j] * shapeScale - a, ab) / length2;
+      if (t > 0.05 && t < 0.95) feet.push_back(t);
+    }
+    std::sort(feet.begin(), feet.end());
+    feet.erase(std::unique(feet.begin(), feet.end(), [](double s, double t) { return t - s < 0.05; }), feet.end());
+    for (double t : feet) {
+      points_.push_back(ring[i] + t * (ring[i + 1] - ring[i]));
+      origin_.push_back(-1);
+      added = true;
+    }
+  }
+  if (inner) points_.push_back(*inner), origin_.push_back(-1);
+  return added;
 }
 
 }  // namespace mesher

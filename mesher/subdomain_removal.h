@@ -28,8 +28,16 @@ struct RingElement {
 // axis). Scratch memory is kept from ring to ring.
 class SubdomainRemover {
  public:
+  // `boundaryPoints`: the ring's first points run along the polygon's boundary (LeafRegion's
+  // pathPoints). Where no fan reaches the bound, points may be added on that stretch: elements
+  // then index points(), and ringIndexOf() tells which of them are ring points.
   void mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-            std::vector<RingElement>& out);
+            std::vector<RingElement>& out, size_t boundaryPoints = 0);
+  // The points the last mesh() call's elements index (tree coordinates): the ring with any
+  // added points in order, then the inner point.
+  const std::vector<Vec2>& points() const { return points_; }
+  // Which ring point points()[i] is, or -1 for the inner point or an added one.
+  int ringIndexOf(size_t i) const { return origin_[i]; }
 
  private:
   // Fans `points` (a ring, with the inner point appended when there is one) out from
@@ -42,6 +50,12 @@ class SubdomainRemover {
   // the point does not see some ring edge.
   bool fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start);
   void mergeRun(const std::vector<Vec2>& points, uint32_t hinge);
+  // The best fan of points_ (the first n a ring, then the inner point when `hasInner`) into
+  // best_; returns its score.
+  double search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale);
+  // Rebuilds points_ and origin_ with the feet of ring points on the ring's boundary stretch;
+  // false when there are none.
+  bool augment(size_t n, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale);
   // How close trial_ comes to the bound: 1 or more when every angle reaches what it can.
   double score() const;
   // Whether trial_ reaches the bound at every corner (score() >= 1), without angles.
@@ -50,7 +64,9 @@ class SubdomainRemover {
   std::vector<Vec2> points_, shaped_;
   std::vector<double> reach_, tanReach_;
   std::vector<uint32_t> run_;
-  std::vector<RingElement> trial_, best_;
+  std::vector<int> origin_;
+  std::vector<double> feet_;
+  std::vector<RingElement> trial_, best_, kept_;
 };
 
 }  // namespace mesher

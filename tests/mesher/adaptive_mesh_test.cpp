@@ -110,6 +110,22 @@ TEST(AdaptiveMesh, StretchedSquaresWithTVerticesMeetTheAngleBound) {
   EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
 }
 
+// A window's top edge just under a grid line leaves a thin strip of wall above it. Refined above,
+// the strip's upper side gains T-vertices; it is then cut across at their feet on the window's
+// edge (no T-vertex there: nothing lies across the boundary), not fanned into slivers (down to
+// 2.9 degrees).
+TEST(AdaptiveMesh, ThinStripsAlongAnEdgeSplitAcrossAtTVertices) {
+  for (double top : {19.5, 19.7, 19.9}) {
+    SCOPED_TRACE(top);
+    const PolygonWithHoles wall{{{0, 0}, {64, 0}, {64, 32}, {0, 32}}, {{{8, 8}, {8, top}, {40, top}, {40, 8}}}};
+    AdaptiveMesh mesh(wall, {4});
+    for (double x : {10.0, 30.0, 50.0}) mesh.refine(elementNear(mesh, {x, top + 1.5}));
+    const MeshCheck check = checkMesh(wall, mesh.snapshot());
+    test::expectValidMesh(check);
+    EXPECT_EQ(check.belowAngleBound, 0u);
+  }
+}
+
 // Neighbouring elements (sharing an edge) come from quadrants at most one level apart.
 int largestLevelJump(const AdaptiveMesh& mesh) {
   std::map<std::pair<uint32_t, uint32_t>, int> levelOfEdge;
