@@ -16,19 +16,22 @@ namespace mesher {
 
 enum class QuadStatus : uint8_t { Node, Undefined, Outside, Boundary, Inside };
 
+// 40 bytes: a million-leaf tree is walked more than once, and its size decides how much of it
+// stays in cache.
 struct Quadrant {
   int64_t x = 0, y = 0;             // lower-left corner, tree units
-  int level = 0;                    // 0 is the root; its edge is 2^(maxDepth - level)
   int32_t firstChild = -1;          // children at firstChild + 0..3: SW, SE, NW, NE; -1: a leaf
   int32_t parent = -1;
+  int32_t vertex = -1;              // the input vertex in the closed square, if any
+  std::array<uint32_t, 2> edges{};  // input edges through the open square
+  uint8_t level = 0;                // 0 is the root; its edge is 2^(maxDepth - level)
+  uint8_t edgeCount = 0;
   QuadStatus status = QuadStatus::Undefined;
   bool forced = false;              // split only to keep 2:1 balance (may merge back when not needed)
-  int32_t vertex = -1;              // the input vertex in the closed square, if any
-  uint8_t edgeCount = 0;
-  std::array<uint32_t, 2> edges{};  // input edges through the open square
 
   bool isLeaf() const { return firstChild < 0; }
 };
+static_assert(sizeof(Quadrant) == 40);
 
 // Edge e runs from vertex edges[e][0] to edges[e][1] with the polygon's inside on its left
 // (outer ring counter-clockwise, holes clockwise). Every vertex has one edge in and one out.
