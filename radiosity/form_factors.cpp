@@ -90,10 +90,16 @@ double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const P
 }
 
 void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
-                   double ratio, int splits, double& front, double& back) {
+                   double farRatio, double ratio, int splits, double& front, double& back) {
   const glm::dvec3 centre = polygonCentroid(piece);
-  const double distance = glm::length(centre - r.centre) - r.radius;
-  if (splits <= 0 || pieceRadius(piece, centre) * ratio <= distance) {
+  const double distance = glm::length(centre - r.centre) - r.radius, size = pieceRadius(piece, centre);
+  if (size * farRatio <= distance) {
+    // Far for its size: its centre stands for it, as a whole shooter's does for far receivers.
+    const double f = weight * pointToPolygon(centre, normal, r.polygon);
+    (glm::dot(r.normal, centre) > r.offset ? front : back) += f;
+    return;
+  }
+  if (splits <= 0 || size * ratio <= distance) {
     // A piece small for its distance: a rule exact for quadratics over it (2 x 2 Gauss points on
     // a quad's bilinear map, the 3-point rule on a triangle), so the error falls as the fourth
     // power of the piece's size where the midpoint rule's falls as the square.
@@ -128,7 +134,7 @@ void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& norma
   const int count = splitInFour(piece, parts);
   const double area = polygonArea(piece);
   for (int k = 0; k < count; ++k)
-    areaToPolygon(parts[k], weight * polygonArea(parts[k]) / area, normal, r, ratio, splits - 1, front, back);
+    areaToPolygon(parts[k], weight * polygonArea(parts[k]) / area, normal, r, farRatio, ratio, splits - 1, front, back);
 }
 
 }  // namespace radiosity

@@ -36,12 +36,13 @@ struct Receiver {
 };
 
 // Adds to front/back weight x the form factor from `piece` (a part of the shooter, whose
-// normal is `normal`) to `r`, averaged over the piece: `piece` is split into four (edge
+// normal is `normal`) to `r`, averaged over the piece. A piece farther from r's bounding sphere
+// than `farRatio` times its radius counts by its centre alone. Otherwise `piece` is split into four (edge
 // midpoints) while its radius exceeds its distance to r's bounding sphere over `ratio` and
 // `splits` allows, then each piece is integrated by a Gauss rule (4 points on a quad, 3 on a
 // triangle). A point behind r's plane sees r's back: its share goes to `back`. `weight` is the
 // piece's share of the shooter's area.
 void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
-                   double ratio, int splits, double& front, double& back);
+                   double farRatio, double ratio, int splits, double& front, double& back);
 
 }  // namespace radiosity

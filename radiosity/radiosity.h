@@ -63,7 +63,7 @@ struct SolverSettings {
   int maxShooterSplits = 3;
   // Receivers whose form factor is below this many hemisphere pixels are too small for the item
   // buffer (a pixel is either theirs or not): their factor is computed analytically.
-  double smallReceiverPixels = 32;
+  double smallReceiverPixels = 128;
 };
 
 // Counters since construction. Powers are per channel (see the units above).
@@ -72,6 +72,7 @@ struct Stats {
   uint64_t frames = 0;             // hemisphere frames rendered
   uint64_t nearReceivers = 0;      // receiver factors integrated over the shooter's area
   uint64_t smallReceivers = 0;     // receiver factors computed analytically for their size
+  uint64_t movedShooters = 0;      // patches whose centre was inside a solid (see solver.cpp)
   uint64_t renormalisedShots = 0;  // shots whose corrections were too big for the rest to absorb
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area

@@ -88,6 +88,7 @@ struct Solver::State {
   std::vector<uint32_t> patchFirst, patchElements, patchSurface;
   std::vector<glm::dvec3> patchCentre, unshot, shot;
   std::vector<double> patchArea, patchRadius;
+  std::vector<uint8_t> pointChosen;  // patchCentre[p] checked for seeing fronts (see choosePoint)
 
   std::vector<glm::vec3> soupVertices;
   std::vector<pxpl5::Polygon> soupPolygons;
@@ -112,6 +113,8 @@ struct Solver::State {
   void build(std::span<const Surface> input);
   double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
                     const glm::dvec3& eyeNormal, uint32_t j);
+  double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
+  void choosePoint(uint32_t p);
   void shoot(uint32_t p);
 };
 
@@ -208,6 +211,7 @@ void Solver::State::build(std::span<const Surface> input) {
     stats.emittedPower += kPi * surfaces[si].emission * a;
   }
 
+  pointChosen.assign(patchTotal, 0);
   pixelFactor.assign(polygon.size(), 0.0);
   replaced.assign(polygon.size(), 0);
   newFactors.reserve(polygon.size());
@@ -231,7 +235,50 @@ double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const Hemi
   return itemBufferVisibility(frame, axes, eye, targets, j, {normal, offset, surfaceOf});
 }
 
+double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const {
+  double back = 0;
+  for (const pxpl5::IdFactor& f : frame.factors)
+    if (glm::dot(normal[f.id], eye) <= offset[f.id]) back += f.factor;
+  return back;
+}
+
+// Surfaces are one-sided and a solid's faces face out, so a point that sees mostly backs of
+// faces is inside a solid: the part of a floor element or patch under a box standing on it.
+// That part is dark (nothing reaches it) while the element's light came in on its open part, so
+// shooting from inside would hand all of it to backs. The first time a patch shoots, a centre
+// that sees more than a quarter backs is replaced by the element centre, or the point a third
+// of the way in from an element corner, that sees the fewest; the geometry does not change, so
+// the choice is kept.
+void Solver::State::choosePoint(uint32_t p) {
+  pointChosen[p] = 1;
+  const glm::dvec3 n = surfaces[patchSurface[p]].normal;
+  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
+  const auto backFrom = [&](const glm::dvec3& point) {
+    ++stats.frames;
+    return backShare(renderer.render({glm::vec3(point), glm::vec3(n), own}, {soupVertices, soupPolygons}), point);
+  };
+  double best = backFrom(patchCentre[p]);
+  if (best <= 0.25) return;
+  glm::dvec3 bestPoint = patchCentre[p];
+  for (uint32_t e : own) {
+    const auto consider = [&](const glm::dvec3& q) {
+      const double b = backFrom(q);
+      if (b < best) best = b, bestPoint = q;
+    };
+    consider(centre[e]);
+    if (own.size() == 1)
+      for (int k = 0; k < polygon[e].n; ++k) consider(polygon[e].v[k] + (centre[e] - polygon[e].v[k]) / 3.0);
+  }
+  patchCentre[p] = bestPoint;
+  double r = 0;
+  for (uint32_t e : own)
+    for (int k = 0; k < polygon[e].n; ++k) r = std::max(r, glm::length(polygon[e].v[k] - bestPoint));
+  patchRadius[p] = r;
+  ++stats.movedShooters;
+}
+
 void Solver::State::shoot(uint32_t p) {
+  if (!pointChosen[p]) choosePoint(p);
   const uint32_t si = patchSurface[p];
   const glm::dvec3 dB = unshot[p];
   unshot[p] = glm::dvec3(0);
@@ -264,7 +311,8 @@ void Solver::State::shoot(uint32_t p) {
       const Receiver r{polygon[j], centre[j], radius[j], normal[j], offset[j]};
       for (uint32_t k = patchFirst[p]; k < patchFirst[p + 1]; ++k) {
         const uint32_t e = patchElements[k];
-        areaToPolygon(polygon[e], area[e] / patchArea[p], eyeNormal, r, settings.pieceRatio, settings.maxShooterSplits,
+        areaToPolygon(polygon[e], area[e] / patchArea[p], eyeNormal, r, settings.nearFieldRatio, settings.pieceRatio,
+                      settings.maxShooterSplits,
                       f.front, f.back);
       }
       if (f.front + f.back > 0) {
