@@ -24,6 +24,13 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--stats", render.stats, "write statistics as JSON");
   renderCommand->add_option("--exposure", render.exposure, "radiance scale before sRGB (default: automatic)")
       ->check(CLI::PositiveNumber);
+  renderCommand->add_option("--patch-size", render.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
+  renderCommand->add_option("--converge", render.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
+      ->check(CLI::Range(0.0, 1.0));
+  renderCommand->add_option("--max-shots", render.maxShots, "stop after this many shots even if not converged");
+  renderCommand->add_option("--threads", render.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
+      ->check(CLI::Range(1, 64));
+  renderCommand->add_flag("--quiet", render.quiet, "no progress lines on stdout");
 
   app::ViewOptions view;
   CLI::App* viewCommand = cli.add_subcommand("view", "open the walkthrough window (GLFW + Dear ImGui)");
@@ -34,6 +41,9 @@ int main(int argc, char** argv) {
   viewCommand->add_option("--frames", view.frames, "close after this many frames")->check(CLI::NonNegativeNumber);
   viewCommand->add_option("--screenshot", view.screenshot, "with --frames: save the last frame as PNG");
   viewCommand->add_flag("--wireframe", view.wireframe, "start with the mesh edges drawn");
+  viewCommand->add_option("--threads", view.lighting.solver.graphicsProcessors,
+                          "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
+      ->check(CLI::Range(1, 64));
 
   app::MeshOptions mesh;
   CLI::App* meshCommand = cli.add_subcommand("mesh", "mesh a scene or a polygon case and print statistics");

@@ -18,29 +18,15 @@ float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0
 
 }  // namespace
 
-DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambientOut) {
-  std::vector<radiosity::SurfaceLight> lights;
-  lights.reserve(scene.surfaces.size());
-  for (const Surface& s : scene.surfaces) {
-    const Material& m = scene.materials[s.material];
-    lights.push_back({s.area, m.reflectance, m.emission});
-  }
-  const glm::dvec3 ambient = radiosity::ambientRadiance(lights);
-  if (ambientOut) *ambientOut = ambient;
-
+DisplayMesh displayMesh(const MeshedScene& meshed) {
   DisplayMesh mesh;
-  mesher::Mesher mesher;
-  for (const Surface& s : scene.surfaces) {
-    const Material& m = scene.materials[s.material];
-    const glm::vec3 radiance{m.emission + m.reflectance * ambient};
-
-    const SurfaceMesh surfaceMesh = meshSurface(s, mesher);
+  for (const SurfaceMesh& surfaceMesh : meshed.surfaces) {
     const mesher::Mesh& patches = surfaceMesh.mesh;
     const auto first = static_cast<uint32_t>(mesh.positions.size());
     mesh.surfaceVertexStart.push_back(first);
     for (const Vec3& p : surfaceMesh.positions) {
       mesh.positions.emplace_back(p);
-      mesh.radiance.push_back(radiance);
+      mesh.radiance.emplace_back(0.0f);
       mesh.area.push_back(0);
     }
 
@@ -66,6 +52,29 @@ DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambientOut) 
     }
   }
   mesh.surfaceVertexStart.push_back(static_cast<uint32_t>(mesh.positions.size()));
+  return mesh;
+}
+
+glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {
+  std::vector<radiosity::SurfaceLight> lights;
+  lights.reserve(scene.surfaces.size());
+  for (const Surface& s : scene.surfaces) {
+    const Material& m = scene.materials[s.material];
+    lights.push_back({s.area, m.reflectance, m.emission});
+  }
+  const glm::dvec3 ambient = radiosity::ambientRadiance(lights);
+  for (size_t i = 0; i < scene.surfaces.size(); ++i) {
+    const Material& m = scene.materials[scene.surfaces[i].material];
+    const glm::vec3 radiance{m.emission + m.reflectance * ambient};
+    std::fill(mesh.radiance.begin() + mesh.surfaceVertexStart[i], mesh.radiance.begin() + mesh.surfaceVertexStart[i + 1], radiance);
+  }
+  return ambient;
+}
+
+DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambientOut) {
+  DisplayMesh mesh = displayMesh(meshScene(scene));
+  const glm::dvec3 ambient = shadeWithAmbient(scene, mesh);
+  if (ambientOut) *ambientOut = ambient;
   return mesh;
 }
 

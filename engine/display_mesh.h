@@ -1,8 +1,10 @@
 // What the display draws: triangles with per-vertex linear radiance (Gouraud shading), and the
-// element edges for the wireframe. Until the radiosity solver exists the radiance is the
-// placeholder "emission plus reflectance under the ambient term" of radiosity/ambient.h.
+// element edges for the wireframe. The radiance comes from the radiosity solver (lighting.h);
+// before any light is shot it is "emission plus reflectance under the ambient term" of
+// radiosity/ambient.h.
 #pragma once
 
+#include "engine/meshed_scene.h"
 #include "engine/scene.h"
 
 #include <glm/vec3.hpp>
@@ -26,9 +28,16 @@ struct DisplayMesh {
   size_t triangleCount() const { return triangles.size() / 3; }
 };
 
-// Meshes every surface with the modified quadtree at its patch size and shades it with its
-// emission plus its reflectance times the scene's ambient radiance, returned in `ambient` when
-// not null.
+// The display's geometry of meshed surfaces (radiance left 0): quads split into two triangles,
+// each element edge once.
+DisplayMesh displayMesh(const MeshedScene& meshed);
+
+// Shades every surface with its emission plus its reflectance times the scene's ambient
+// radiance (the picture before any light is shot); returns that ambient radiance.
+glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh);
+
+// meshScene, displayMesh and shadeWithAmbient in one; the ambient radiance goes to `ambient`
+// when not null.
 DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambient = nullptr);
 
 // An exposure that maps the area-weighted log-average luminance of the mesh to `key` (Reinhard

@@ -4,6 +4,8 @@
 #include "app/image/atomic_file.h"
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
+#include "engine/lighting.h"
+#include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
 
 #include <nlohmann/json.hpp>
@@ -28,8 +30,12 @@ int runRender(const RenderOptions& options) {
     std::cerr << "walkrad render: nothing to write: give --out FILE.png and/or --linear FILE.pfm\n";
     return 2;
   }
+  for (const std::string& file : {options.out, options.linear, options.stats})
+    if (!file.empty()) checkCanWrite(file);
   auto start = Clock::now();
-  const engine::Scene scene = engine::loadScene(options.scene);
+  engine::Scene scene = engine::loadScene(options.scene);
+  if (options.patchSize)
+    for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
   const double loadMs = millisecondsSince(start);
 
   ViewCamera camera;
@@ -39,8 +45,30 @@ int runRender(const RenderOptions& options) {
   }
 
   start = Clock::now();
-  const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+  const engine::MeshedScene meshed = engine::meshScene(scene);
+  engine::DisplayMesh mesh = engine::displayMesh(meshed);
   const double meshMs = millisecondsSince(start);
+
+  // Solve first (progress on stdout about once a second), then light the display from it.
+  start = Clock::now();
+  radiosity::SolverSettings settings;
+  settings.graphicsProcessors = options.threads;
+  radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
+  uint64_t shots = 0;
+  auto lastReport = start;
+  while (shots < options.maxShots && !solver.converged(options.converge) && solver.step()) {
+    ++shots;
+    if (!options.quiet && std::chrono::duration<double>(Clock::now() - lastReport).count() >= 1) {
+      lastReport = Clock::now();
+      std::cout << "walkrad render: " << shots << " shots, unshot " << 100 * solver.unshotFraction() << "%" << std::endl;
+    }
+  }
+  engine::displayRadiance(solver, mesh.radiance);
+  const double solveMs = millisecondsSince(start);
+  if (!options.quiet)
+    std::cout << "walkrad render: solved in " << solveMs / 1000 << " s: " << shots << " shots, unshot "
+              << 100 * solver.unshotFraction() << "%, " << solver.patchCount() << " patches, " << solver.elementCount()
+              << " elements" << std::endl;
 
   start = Clock::now();
   const float exposure = static_cast<float>(options.exposure.value_or(engine::autoExposure(mesh)));
@@ -51,22 +79,21 @@ int runRender(const RenderOptions& options) {
   if (!options.out.empty()) writePng(options.out, images.color);
   if (!options.linear.empty()) writePfm(options.linear, images.linear);
   if (!options.stats.empty()) {
-    // Keys of spec/cli.md. There is no solver yet: every surface is one patch, nothing is shot.
-    // Elements are the quadtree's quads and triangles.
     const nlohmann::ordered_json stats = {
         {"load_ms", loadMs},
         {"mesh_ms", meshMs},
-        {"solve_ms", 0.0},
+        {"solve_ms", solveMs},
         {"render_ms", renderMs},
-        {"patches", scene.surfaces.size()},
-        {"elements", mesh.elements},
+        {"patches", solver.patchCount()},
+        {"elements", solver.elementCount()},
         {"vertices", mesh.positions.size()},
-        {"shots", 0},
-        {"unshot_fraction", 1.0},
+        {"shots", shots},
+        {"unshot_fraction", solver.unshotFraction()},
+        {"shots_per_second", solveMs > 0 ? 1000.0 * static_cast<double>(shots) / solveMs : 0.0},
+        {"graphics_processors", options.threads},
         {"surfaces", scene.surfaces.size()},
         {"objects", scene.objects.size()},
         {"exposure", exposure},
-        {"shading", "ambient placeholder: emission + reflectance x ambient, no radiosity yet"},
     };
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }

@@ -1,6 +1,7 @@
 // `walkrad render`: a headless image of a scene (spec/cli.md).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -15,6 +16,11 @@ struct RenderOptions {
   int width = 640, height = 480;
   bool wireframe = false;
   std::optional<double> exposure;  // none: automatic
+  std::optional<double> patchSize; // none: the scene's
+  double converge = 0.01;          // shoot until the unshot fraction is below this
+  uint64_t maxShots = UINT64_MAX;  // or until this many shots
+  int threads = 1;                 // pxpl5 graphics processors
+  bool quiet = false;              // no progress lines (stdout)
 };
 
 // Runs the command; returns the process exit code (0, 2 for bad input, 1 otherwise), having

@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <stdexcept>
+#include <string>
 
 namespace app {
 
@@ -56,6 +57,15 @@ void SceneRenderer::upload(const engine::DisplayMesh& mesh) {
   uploadBuffer(edges_, GL_ELEMENT_ARRAY_BUFFER, mesh.edges.data(), mesh.edges.size() * sizeof(uint32_t));
   triangleIndices_ = static_cast<GLsizei>(mesh.triangles.size());
   edgeIndices_ = static_cast<GLsizei>(mesh.edges.size());
+  vertices_ = mesh.positions.size();
+}
+
+void SceneRenderer::updateRadiance(const std::vector<glm::vec3>& radiance) {
+  if (radiance.size() != vertices_) throw std::invalid_argument("radiance for " + std::to_string(radiance.size()) +
+                                                                " vertices, the mesh has " + std::to_string(vertices_));
+  glBindBuffer(GL_ARRAY_BUFFER, radiance_);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(radiance.size() * sizeof(glm::vec3)), radiance.data());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput) const {

@@ -27,6 +27,8 @@ class SceneRenderer {
 
   // Replaces the mesh on the GPU.
   void upload(const engine::DisplayMesh& mesh);
+  // Replaces the vertex radiance only (a new lighting snapshot); one value per uploaded vertex.
+  void updateRadiance(const std::vector<glm::vec3>& radiance);
 
   // Draws into the bound framebuffer: tone-mapped sRGB colour, the wireframe when asked.
   void draw(const FrameSettings& frame) const;
@@ -42,6 +44,7 @@ class SceneRenderer {
   GlProgram wire_{"wire.vert", "wire.frag"};
   GLuint vao_ = 0, positions_ = 0, radiance_ = 0, triangles_ = 0, edges_ = 0;
   GLsizei triangleIndices_ = 0, edgeIndices_ = 0;
+  size_t vertices_ = 0;
 };
 
 // Reads the bound framebuffer's `buffer` (GL_BACK, GL_FRONT, GL_COLOR_ATTACHMENT0) as RGB8, top

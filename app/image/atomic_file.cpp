@@ -23,4 +23,10 @@ void writeFileAtomically(const std::string& path, std::string_view bytes) {
   if (std::rename(temporary.c_str(), path.c_str()) != 0) fail("rename into place");
 }
 
+void checkCanWrite(const std::string& path) {
+  const std::string::size_type slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) throw std::runtime_error(path + ": cannot create: " + std::strerror(errno));
+}
+
 }  // namespace app

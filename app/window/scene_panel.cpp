@@ -12,7 +12,7 @@ namespace {
 void objectList(const engine::Scene& scene) {
   std::vector<int> surfacesOf(scene.objects.size(), 0);
   for (const engine::Surface& s : scene.surfaces) ++surfacesOf[s.object];
-  if (!ImGui::CollapsingHeader("Objects", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader("Objects")) return;
   ImGui::BeginChild("objects", ImVec2(0, 160), true);
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const engine::Object& o = scene.objects[i];
@@ -30,23 +30,39 @@ void cameraList(const engine::Scene& scene, PanelState& state) {
     if (ImGui::Selectable(scene.cameras[i].name.c_str(), false)) state.jumpToCamera = static_cast<int>(i);
 }
 
+void lightingSection(const engine::LightingSnapshot& lighting, PanelState& state) {
+  if (!ImGui::CollapsingHeader("Radiosity", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::Text("%llu shots, %.0f shots/s", static_cast<unsigned long long>(lighting.shots), lighting.shotsPerSecond);
+  ImGui::Text("unshot energy %.3g%% of emitted", 100 * lighting.unshotFraction);
+  ImGui::ProgressBar(static_cast<float>(1 - lighting.unshotFraction), ImVec2(-1, 0),
+                     lighting.converged ? "converged" : lighting.paused ? "paused" : "shooting");
+  ImGui::Text("%zu elements, %zu shooting patches", lighting.elements, lighting.patches);
+  ImGui::Checkbox("pause", &state.paused);
+  ImGui::SameLine();
+  if (ImGui::Button("restart")) state.restartRequested = true;
+}
+
 }  // namespace
 
-void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh, PanelState& state) {
+void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh, const engine::LightingSnapshot& lighting,
+                    PanelState& state) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("walkrad");
   ImGui::Text("%s (%s)", std::filesystem::path(scene.file).filename().c_str(), scene.units.c_str());
-  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Shading: emission + reflectance x ambient.");
-  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "No radiosity solution yet.");
-  ImGui::TextDisabled("Mesh: modified quadtree (thesis ch. 5)");
+  ImGui::TextDisabled("Mesh: modified quadtree (thesis ch. 5); light: progressive radiosity");
+  ImGui::TextDisabled("on an emulated Pixel-Planes 5, ambient term until converged");
   ImGui::Separator();
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::Text("%.1f fps (%.2f ms a frame)", io.Framerate, 1000.0f / io.Framerate);
   ImGui::Text("%zu objects, %zu surfaces", scene.objects.size(), scene.surfaces.size());
-  ImGui::Text("%zu patches (%zu quads), %zu vertices", mesh.elements, mesh.quads, mesh.positions.size());
+  ImGui::Text("%zu elements (%zu quads), %zu vertices", mesh.elements, mesh.quads, mesh.positions.size());
+  ImGui::Separator();
+  lightingSection(lighting, state);
   ImGui::Separator();
   ImGui::SliderFloat("exposure", &state.exposure, 1e-3f, 1e3f, "%.3g", ImGuiSliderFlags_Logarithmic);
+  ImGui::SameLine();
+  if (ImGui::Button("auto")) state.autoExposureRequested = true;
   ImGui::Checkbox("wireframe", &state.wireframe);
   ImGui::SameLine();
   if (ImGui::Button("screenshot (F12)")) state.screenshotRequested = true;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "engine/display_mesh.h"
+#include "engine/lighting.h"
 #include "engine/scene.h"
 
 #include <string>
@@ -16,9 +17,14 @@ struct PanelState {
   int jumpToCamera = -1;        // set by the panel when a camera is clicked, index into cameras
   bool screenshotRequested = false;
   std::string lastScreenshot;   // path of the last screenshot, shown
+  bool paused = false;          // the solver's pause toggle
+  bool restartRequested = false;
+  bool autoExposureRequested = false;
 };
 
-// Draws the panel for one frame; inputs that change the view are written into `state`.
-void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh, PanelState& state);
+// Draws the panel for one frame; inputs that change the view or the solver are written into
+// `state`. `lighting` is the newest solver snapshot.
+void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh, const engine::LightingSnapshot& lighting,
+                    PanelState& state);
 
 }  // namespace app

@@ -13,6 +13,8 @@
 #include "app/window/scene_panel.h"
 #include "app/window/walk_controls.h"
 #include "engine/display_mesh.h"
+#include "engine/lighting.h"
+#include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
 
 #include <ctime>
@@ -52,6 +54,31 @@ struct ImGuiSession {
 // chains to.
 double g_scroll = 0;
 void onScroll(GLFWwindow*, double, double y) { g_scroll += y; }
+
+// The solver's progress on the command line too: a line about every two seconds while it
+// shoots, and one when it converges.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string scene) : scene_(std::move(scene)) {}
+  void report(const engine::LightingSnapshot& s) {
+    const double now = glfwGetTime();
+    if (s.converged && !convergedShown_) {
+      std::cout << "walkrad view: " << scene_ << ": converged after " << s.shots << " shots in " << s.solveSeconds
+                << " s (unshot " << 100 * s.unshotFraction << "%)" << std::endl;
+      convergedShown_ = true;
+    } else if (!s.converged && s.shots > 0 && now - last_ >= 2) {
+      std::cout << "walkrad view: " << scene_ << ": " << s.shots << " shots, unshot " << 100 * s.unshotFraction << "%"
+                << std::endl;
+      last_ = now;
+    }
+    if (!s.converged) convergedShown_ = false;
+  }
+
+ private:
+  std::string scene_;
+  double last_ = 0;
+  bool convergedShown_ = false;
+};
 
 std::string screenshotName(const engine::Scene& scene) {
   char stamp[32];
@@ -97,7 +124,9 @@ int runView(const ViewOptions& options) {
     std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
     return 2;
   }
-  const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+  const engine::MeshedScene meshed = engine::meshScene(scene);
+  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  engine::shadeWithAmbient(scene, mesh);
 
   const GlfwSession glfw;
   if (!glfw.ok) {
@@ -132,6 +161,10 @@ int runView(const ViewOptions& options) {
     renderer.upload(mesh);
     PanelState panel;
     panel.exposure = static_cast<float>(engine::autoExposure(mesh));
+    // The solver shoots on its own thread; each frame shows its newest snapshot.
+    engine::LightingThread lighting(engine::radiosityInput(scene, meshed), options.lighting);
+    std::shared_ptr<const engine::LightingSnapshot> shown;
+    ProgressLine progress(scene.file);
     panel.wireframe = options.wireframe;
     WalkSettings walk;
     walk.speed = defaultWalkSpeed(scene);
@@ -148,11 +181,28 @@ int runView(const ViewOptions& options) {
       if (f12Down && !f12WasDown) panel.screenshotRequested = true;
       f12WasDown = f12Down;
 
+      std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
+      if (newest != shown) {
+        shown = std::move(newest);
+        mesh.radiance = shown->radiance;
+        renderer.updateRadiance(mesh.radiance);
+        progress.report(*shown);
+      }
+      if (panel.autoExposureRequested) {
+        panel.exposure = static_cast<float>(engine::autoExposure(mesh));
+        panel.autoExposureRequested = false;
+      }
+
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
       panel.walkSpeed = walk.speed;
-      drawScenePanel(scene, mesh, panel);
+      drawScenePanel(scene, mesh, *shown, panel);
+      if (panel.paused != shown->paused) lighting.setPaused(panel.paused);
+      if (panel.restartRequested) {
+        lighting.restart();
+        panel.restartRequested = false;
+      }
       if (panel.jumpToCamera >= 0) {
         camera = fromSceneCamera(scene.cameras[static_cast<size_t>(panel.jumpToCamera)]);
         panel.jumpToCamera = -1;

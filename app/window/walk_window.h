@@ -1,6 +1,8 @@
 // `walkrad view`: the walkthrough window (GLFW + Dear ImGui).
 #pragma once
 
+#include "engine/lighting.h"
+
 #include <string>
 
 namespace app {
@@ -12,6 +14,7 @@ struct ViewOptions {
   int frames = 0;          // > 0: close after this many frames (scripts, tests)
   std::string screenshot;  // with `frames`: save the last frame here
   bool wireframe = false;  // start with the mesh edges drawn
+  engine::LightingSettings lighting;  // the solver thread's
 };
 
 // Runs the window until it is closed; returns the process exit code, having printed one line on

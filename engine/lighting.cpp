@@ -1,0 +1,103 @@
+#include "engine/lighting.h"
+
+#include <chrono>
+
+namespace engine {
+
+void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out) {
+  out.clear();
+  for (uint32_t s = 0; s < solver.surfaceCount(); ++s)
+    for (const glm::dvec3& radiance : solver.vertexRadiance(s, true)) out.emplace_back(radiance);
+}
+
+LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings)
+    : surfaces_(std::move(surfaces)), settings_(settings) {
+  // The first solver is made here, so bad input throws to the caller rather than on the thread.
+  auto first = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
+  publish(*first, first->converged(settings_.converge));
+  thread_ = std::thread([this, solver = std::move(first)]() mutable { run(std::move(solver)); });
+}
+
+void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
+  using Clock = std::chrono::steady_clock;
+  auto lastPublish = Clock::now();
+  bool done = solver->converged(settings_.converge);
+  for (;;) {
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || restart_ || (!paused_ && !done); });
+      if (stop_) return;
+      if (restart_) {
+        restart_ = false;
+        lock.unlock();
+        solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
+        done = solver->converged(settings_.converge);
+        publish(*solver, done);
+        continue;
+      }
+    }
+    done = !solver->step() || solver->converged(settings_.converge);
+    const auto now = Clock::now();
+    if (done || std::chrono::duration<double>(now - lastPublish).count() >= settings_.publishSeconds) {
+      publish(*solver, done);
+      lastPublish = now;
+    }
+  }
+}
+
+LightingThread::~LightingThread() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+std::shared_ptr<const LightingSnapshot> LightingThread::latest() const {
+  std::lock_guard lock(mutex_);
+  return latest_;
+}
+
+void LightingThread::setPaused(bool paused) {
+  {
+    std::lock_guard lock(mutex_);
+    paused_ = paused;
+  }
+  wake_.notify_all();
+  std::lock_guard lock(mutex_);
+  if (latest_ && latest_->paused != paused) {
+    auto copy = std::make_shared<LightingSnapshot>(*latest_);
+    copy->paused = paused;
+    copy->version = ++version_;
+    latest_ = std::move(copy);
+  }
+}
+
+void LightingThread::restart() {
+  {
+    std::lock_guard lock(mutex_);
+    restart_ = true;
+  }
+  wake_.notify_all();
+}
+
+void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
+  // Built outside the lock: the UI only ever waits for a pointer swap.
+  auto snapshot = std::make_shared<LightingSnapshot>();
+  displayRadiance(solver, snapshot->radiance);
+  const radiosity::Stats& stats = solver.stats();
+  snapshot->shots = stats.shots;
+  snapshot->unshotFraction = solver.unshotFraction();
+  snapshot->solveSeconds = stats.seconds;
+  snapshot->shotsPerSecond = stats.seconds > 0 ? static_cast<double>(stats.shots) / stats.seconds : 0;
+  snapshot->elements = solver.elementCount();
+  snapshot->patches = solver.patchCount();
+  snapshot->converged = converged;
+  std::lock_guard lock(mutex_);
+  snapshot->paused = paused_;
+  snapshot->version = ++version_;
+  latest_ = std::move(snapshot);
+}
+
+}  // namespace engine

@@ -1,0 +1,71 @@
+// Lighting a meshed scene with the radiosity solver on its own thread (the "Pixel-Planes 5
+// thread" of DESIGN.md): it shoots shot after shot and publishes snapshots of the vertex
+// radiance; the UI takes the newest one without ever waiting for a shot.
+#pragma once
+
+#include "radiosity/radiosity.h"
+
+#include <glm/vec3.hpp>
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace engine {
+
+// The display radiance of every surface, per display vertex (surface after surface, each in its
+// mesh's vertex order, as DisplayMesh holds them): the solver's vertex radiance plus
+// reflectance times its ambient term.
+void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out);
+
+struct LightingSettings {
+  radiosity::SolverSettings solver;
+  double converge = 1e-3;             // shooting stops once the unshot fraction is below this
+  double publishSeconds = 1.0 / 30;   // snapshots at most this often while shooting
+};
+
+struct LightingSnapshot {
+  uint64_t version = 0;                // grows with every snapshot
+  std::vector<glm::vec3> radiance;     // per display vertex (displayRadiance)
+  uint64_t shots = 0;
+  double unshotFraction = 1;           // unshot over emitted energy
+  double solveSeconds = 0;             // time spent shooting
+  double shotsPerSecond = 0;
+  size_t elements = 0, patches = 0;
+  bool converged = false, paused = false;
+};
+
+class LightingThread {
+ public:
+  // Starts shooting at once. Throws what radiosity::Solver throws for the surfaces.
+  LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings);
+  ~LightingThread();  // stops after the shot in flight
+  LightingThread(const LightingThread&) = delete;
+  LightingThread& operator=(const LightingThread&) = delete;
+
+  // The newest snapshot (the first is published before the first shot). Never waits for a shot.
+  std::shared_ptr<const LightingSnapshot> latest() const;
+
+  // Pausing takes effect after the shot in flight; restarting throws the solution away and
+  // starts again from the emitters.
+  void setPaused(bool paused);
+  void restart();
+
+ private:
+  void run(std::unique_ptr<radiosity::Solver> solver);
+  void publish(const radiosity::Solver& solver, bool converged);
+
+  const std::vector<radiosity::Surface> surfaces_;
+  const LightingSettings settings_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false, paused_ = false, restart_ = false;
+  std::shared_ptr<const LightingSnapshot> latest_;
+  uint64_t version_ = 0;
+  std::thread thread_;  // last: starts once everything above exists
+};
+
+}  // namespace engine

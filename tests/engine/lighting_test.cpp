@@ -1,0 +1,78 @@
+// The solver on its own thread: snapshots of the shared meshes' radiance, pause and restart.
+#include "engine/lighting.h"
+
+#include "engine/display_mesh.h"
+#include "engine/meshed_scene.h"
+#include "engine/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+namespace engine {
+namespace {
+
+Scene loadAsset(const char* name) { return loadScene(std::string(WALKRAD_ASSETS) + "/" + name); }
+
+// Polls until `ready` holds for the newest snapshot; fails the test after a minute.
+template <typename Ready>
+std::shared_ptr<const LightingSnapshot> waitFor(const LightingThread& lighting, Ready ready) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  for (;;) {
+    std::shared_ptr<const LightingSnapshot> s = lighting.latest();
+    if (ready(*s)) return s;
+    if (std::chrono::steady_clock::now() > deadline) {
+      ADD_FAILURE() << "no such snapshot within a minute; the newest has " << s->shots << " shots";
+      return s;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+TEST(Lighting, SnapshotsMatchASolveOnThisThreadShotForShot) {
+  const Scene scene = loadAsset("cornell.json");
+  const MeshedScene meshed = meshScene(scene);
+  const DisplayMesh display = displayMesh(meshed);
+  LightingSettings settings;
+  settings.converge = 0.05;
+  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(first->radiance.size(), display.positions.size());
+  const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.converged; });
+  EXPECT_GT(done->version, first->version);
+  EXPECT_LE(done->unshotFraction, 0.05);
+  EXPECT_EQ(done->elements, display.elements);
+
+  // The same number of shots here gives the same radiance, bit for bit.
+  radiosity::Solver solver(radiosityInput(scene, meshed), settings.solver);
+  for (uint64_t i = 0; i < done->shots; ++i) ASSERT_TRUE(solver.step());
+  std::vector<glm::vec3> here;
+  displayRadiance(solver, here);
+  EXPECT_EQ(here, done->radiance);
+}
+
+TEST(Lighting, PauseStopsShootingAndRestartStartsOver) {
+  const Scene scene = loadAsset("cornell.json");
+  const MeshedScene meshed = meshScene(scene);
+  LightingSettings settings;
+  settings.converge = 1e-4;
+  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  waitFor(lighting, [](const LightingSnapshot& s) { return s.shots >= 5; });
+  lighting.setPaused(true);
+  const auto paused = waitFor(lighting, [](const LightingSnapshot& s) { return s.paused; });
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto later = lighting.latest();
+  EXPECT_TRUE(later->paused);
+  EXPECT_LE(later->shots, paused->shots + 1);  // the shot in flight may still land
+
+  lighting.restart();
+  lighting.setPaused(false);
+  const uint64_t before = later->shots;
+  const auto restarted = waitFor(lighting, [&](const LightingSnapshot& s) { return s.shots < before; });
+  EXPECT_LT(restarted->shots, before);
+}
+
+}  // namespace
+}  // namespace engine
