@@ -81,6 +81,7 @@ struct Solver::State {
   // Per element (global index = the pxpl5 polygon index and id).
   std::vector<Polygon3> polygon;
   std::vector<glm::dvec3> centre, normal, radiance;
+  std::vector<glm::dvec3> elementUnshot;  // per element; its patch's unshot is their area-weighted mean
   std::vector<double> radius, area, offset;
   std::vector<uint32_t> surfaceOf, patchOf;
 
@@ -98,8 +99,9 @@ struct Solver::State {
   std::vector<uint8_t> replaced;
   struct NewFactor {
     uint32_t element;
-    double front, back;
+    glm::dvec3 front, back;  // per channel
   };
+  std::vector<glm::dvec3> shares;
   std::vector<NewFactor> newFactors;
   std::vector<glm::dvec3> targets;
 
@@ -166,6 +168,7 @@ void Solver::State::build(std::span<const Surface> input) {
       area.push_back(a);
       surfaceOf.push_back(static_cast<uint32_t>(si));
       radiance.push_back(s.emission);
+      elementUnshot.push_back(s.emission);
       const uint32_t local = in.patchOfElement.empty() ? static_cast<uint32_t>(e) : in.patchOfElement[e];
       patches = std::max(patches, local + 1);
       if (members.size() < s.firstPatch + patches) members.resize(s.firstPatch + patches);
@@ -281,6 +284,17 @@ void Solver::State::shoot(uint32_t p) {
   if (!pointChosen[p]) choosePoint(p);
   const uint32_t si = patchSurface[p];
   const glm::dvec3 dB = unshot[p];
+  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
+  // Each element's share of the patch's unshot power per channel: the near field sees the
+  // patch's elements one by one, so a patch brighter at one end lights its near receivers so.
+  shares.clear();
+  for (uint32_t e : own) {
+    glm::dvec3 w = area[e] / patchArea[p] * glm::dvec3(1);
+    for (int c = 0; c < 3; ++c)
+      if (dB[c] != 0) w[c] = area[e] * elementUnshot[e][c] / (patchArea[p] * dB[c]);
+    shares.push_back(w);
+    elementUnshot[e] = glm::dvec3(0);
+  }
   unshot[p] = glm::dvec3(0);
   shot[p] += dB;
   history.push_back({p, dB});
@@ -288,7 +302,6 @@ void Solver::State::shoot(uint32_t p) {
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
 
   // The frame: every element but the shooter's own.
-  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
   const pxpl5::HemisphereFrame& frame =
       renderer.render({glm::vec3(eye), glm::vec3(eyeNormal), own}, {soupVertices, soupPolygons});
   ++stats.frames;
@@ -296,9 +309,11 @@ void Solver::State::shoot(uint32_t p) {
   for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = f.factor;
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(eyeNormal));
 
-  // Near and small receivers get new factors.
+  // Near and small receivers get new factors, per channel (near ones weigh the shooter's
+  // elements by their unshot light).
   newFactors.clear();
-  double replacedPixels = 0, replacedNew = 0;
+  double replacedPixels = 0;
+  glm::dvec3 replacedNew{0};
   const double nearLimit = settings.nearFieldRatio * patchRadius[p];
   const double smallLimit = settings.smallReceiverPixels * pixelShare;
   for (uint32_t j = 0; j < polygon.size(); ++j) {
@@ -306,16 +321,17 @@ void Solver::State::shoot(uint32_t p) {
     const glm::dvec3 toward = centre[j] - eye;
     if (glm::dot(toward, eyeNormal) < -radius[j]) continue;            // wholly below the horizon
     const double gap = glm::length(toward) - radius[j];
-    NewFactor f{j, 0, 0};
+    NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
     if (gap < nearLimit) {
       const Receiver r{polygon[j], centre[j], radius[j], normal[j], offset[j]};
-      for (uint32_t k = patchFirst[p]; k < patchFirst[p + 1]; ++k) {
-        const uint32_t e = patchElements[k];
-        areaToPolygon(polygon[e], area[e] / patchArea[p], eyeNormal, r, settings.nearFieldRatio, settings.pieceRatio,
-                      settings.maxShooterSplits,
-                      f.front, f.back);
+      for (size_t k = 0; k < own.size(); ++k) {
+        double front = 0, back = 0;
+        areaToPolygon(polygon[own[k]], 1.0, eyeNormal, r, settings.nearFieldRatio, settings.pieceRatio,
+                      settings.maxShooterSplits, front, back);
+        f.front += shares[k] * front;
+        f.back += shares[k] * back;
       }
-      if (f.front + f.back > 0) {
+      if (channelSum(f.front + f.back) > 0) {
         const double v = visibility(frame, axes, eye, eyeNormal, j);
         f.front *= v, f.back *= v;
       }
@@ -326,7 +342,7 @@ void Solver::State::shoot(uint32_t p) {
       const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
       const double v = unoccluded > 0 ? visibility(frame, axes, eye, eyeNormal, j) : 0;
-      (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = unoccluded * v;
+      (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
       ++stats.smallReceivers;
     }
     replaced[j] = 1;
@@ -335,39 +351,43 @@ void Solver::State::shoot(uint32_t p) {
     newFactors.push_back(f);
   }
 
-  // Keep the energy: the difference comes out of everything else the centre saw, sky included,
-  // when that is plenty (more than ten times the difference). Where nearly everything is new
-  // (a small closed room, all of it near) that cannot work; then all factors and the sky are
-  // scaled to sum to 1, which keeps the near factors' proportions.
+  // Keep the energy, per channel: the difference comes out of everything else the centre saw,
+  // sky included, when that is plenty (more than ten times the difference). Where nearly
+  // everything is new (a small closed room, all of it near) that cannot work; then all factors
+  // and the sky are scaled to sum to 1, which keeps the near factors' proportions.
   double kept = 0;
   for (const pxpl5::IdFactor& f : frame.factors)
     if (!replaced[f.id]) kept += f.factor;
-  const double sky = std::max(0.0, 1.0 - frame.total), difference = replacedNew - replacedPixels;
-  double scale = 1, newScale = 1;
-  if (kept + sky >= 10 * std::abs(difference)) {
-    if (kept + sky > 0) scale = (kept + sky - difference) / (kept + sky);
-  } else {
-    scale = newScale = 1.0 / (kept + sky + replacedNew);
-    ++stats.renormalisedShots;
+  const double sky = std::max(0.0, 1.0 - frame.total);
+  glm::dvec3 scale{1}, newScale{1};
+  bool renormalised = false;
+  for (int c = 0; c < 3; ++c) {
+    const double difference = replacedNew[c] - replacedPixels;
+    if (kept + sky >= 10 * std::abs(difference)) {
+      if (kept + sky > 0) scale[c] = (kept + sky - difference) / (kept + sky);
+    } else {
+      scale[c] = newScale[c] = 1.0 / (kept + sky + replacedNew[c]);
+      renormalised = true;
+    }
   }
+  stats.renormalisedShots += renormalised;
   for (NewFactor& f : newFactors) f.front *= newScale, f.back *= newScale;
 
   // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
-  const auto deposit = [&](uint32_t j, double front, double back) {
-    if (front > 0) {
-      const glm::dvec3& rho = surfaces[surfaceOf[j]].reflectance;
-      const glm::dvec3 gained = rho * dB * (front * patchArea[p] / area[j]);
-      radiance[j] += gained;
-      unshot[patchOf[j]] += gained * (area[j] / patchArea[patchOf[j]]);
-      stats.absorbedPower += (1.0 - rho) * power * front;
-    }
+  const auto deposit = [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
+    const glm::dvec3& rho = surfaces[surfaceOf[j]].reflectance;
+    const glm::dvec3 gained = rho * dB * front * (patchArea[p] / area[j]);
+    radiance[j] += gained;
+    elementUnshot[j] += gained;
+    unshot[patchOf[j]] += gained * (area[j] / patchArea[patchOf[j]]);
+    stats.absorbedPower += (1.0 - rho) * power * front;
     stats.backPower += power * back;
   };
   for (const pxpl5::IdFactor& f : frame.factors) {
     if (replaced[f.id]) continue;
-    const double factor = f.factor * scale;
-    if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, 0);
-    else deposit(f.id, 0, factor);
+    const glm::dvec3 factor = f.factor * scale;
+    if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
+    else deposit(f.id, glm::dvec3(0), factor);
   }
   for (const NewFactor& f : newFactors) deposit(f.element, f.front, f.back);
   stats.escapedPower += power * (sky * scale);

@@ -1,0 +1,208 @@
+// The solver's parts: shooter choice, the convergence measure, substructuring, vertex radiance,
+// receivers of very different sizes, determinism.
+#include "radiosity/radiosity.h"
+
+#include "tests/radiosity/scenes.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace radiosity {
+namespace {
+
+using test::area;
+using test::closedBox;
+using test::rectangle;
+
+constexpr double kPi = std::numbers::pi;
+
+// One quad element, for scenes at scales the mesher has no business with.
+Surface quad(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, glm::dvec3 reflectance, glm::dvec3 emission = glm::dvec3(0)) {
+  Surface s;
+  s.vertices = {origin, origin + u, origin + u + v, origin + v};
+  s.elements = {{0, 1, 2, 3}};
+  s.normal = glm::normalize(glm::cross(u, v));
+  s.reflectance = reflectance;
+  s.emission = emission;
+  return s;
+}
+
+TEST(RadiositySolver, ShootsLargestUnshotPowerFirst) {
+  // A small bright lamp (power pi x 10 x 0.01) and a large dim one (pi x 1 x 1) facing a floor.
+  const std::vector<Surface> scene{
+      quad({0, 0, 2}, {0.1, 0, 0}, {0, -0.1, 0}, glm::dvec3(0), glm::dvec3(10)),
+      quad({2, 0, 2}, {1, 0, 0}, {0, -1, 0}, glm::dvec3(0), glm::dvec3(1)),
+      quad({-2, -2, 0}, {6, 0, 0}, {0, 6, 0}, glm::dvec3(0.5)),
+  };
+  Solver solver(scene);
+  ASSERT_TRUE(solver.nextShooter());
+  EXPECT_EQ(solver.nextShooter()->surface, 1u);
+  EXPECT_NEAR(solver.nextShooter()->unshotPower.x, kPi, 1e-12);
+  ASSERT_TRUE(solver.step());
+  EXPECT_EQ(solver.nextShooter()->surface, 2u);  // the floor now holds more than the small lamp
+  ASSERT_TRUE(solver.step());
+  EXPECT_EQ(solver.nextShooter()->surface, 0u);
+  ASSERT_EQ(solver.shotHistory().size(), 2u);
+  EXPECT_EQ(solver.shotHistory()[0].radiance, glm::dvec3(1));
+}
+
+TEST(RadiositySolver, ConvergenceIsUnshotOverEmittedPower) {
+  // A lamp facing a black-backed receiver of reflectance 0.5 and nothing else.
+  const std::vector<Surface> scene{quad({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, glm::dvec3(0), glm::dvec3(2)),
+                                   quad({0, 0, 1}, {0, 1, 0}, {1, 0, 0}, glm::dvec3(0.5))};
+  Solver solver(scene);
+  EXPECT_DOUBLE_EQ(solver.unshotFraction(), 1.0);
+  EXPECT_FALSE(solver.converged(0.5));
+  ASSERT_TRUE(solver.step());
+  // What is unshot now is what the receiver reflects: 0.5 x the factor 0.19982.
+  EXPECT_NEAR(solver.unshotFraction(), 0.5 * 0.19982, 0.002);
+  EXPECT_TRUE(solver.converged(0.2));
+  ASSERT_TRUE(solver.step());
+  EXPECT_EQ(solver.unshotFraction(), 0.0);  // the lamp reflects nothing
+  EXPECT_FALSE(solver.step());
+  EXPECT_FALSE(solver.nextShooter());
+  EXPECT_EQ(Solver(std::vector<Surface>{scene[1]}).unshotFraction(), 0.0);  // nothing emits
+}
+
+TEST(RadiositySolver, GroupsElementsIntoPatchesOfTheGivenSize) {
+  const Surface wall = rectangle({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, 0.25, glm::dvec3(0.5));
+  const std::vector<uint32_t> patches = groupIntoPatches(wall, 0.5);
+  ASSERT_EQ(patches.size(), wall.elements.size());
+  uint32_t count = 0;
+  for (uint32_t p : patches) count = std::max(count, p + 1);
+  EXPECT_EQ(count, 8u);  // 2 x 1 in squares of 0.5
+  std::vector<double> patchArea(count, 0.0);
+  for (uint32_t e = 0; e < patches.size(); ++e) patchArea[patches[e]] += area(wall, e);
+  for (double a : patchArea) EXPECT_NEAR(a, 0.25, 1e-12);
+  EXPECT_EQ(groupIntoPatches(wall, 0.5), patches);  // deterministic
+}
+
+// Substructuring: patches shoot fewer times than their elements would, and the elements still
+// receive their own light.
+TEST(RadiositySolver, SubstructuringShootsLessForTheSameLight) {
+  std::vector<Surface> alone = closedBox(1, 0.125, glm::dvec3(0.5), glm::dvec3(0));
+  alone[1].emission = glm::dvec3(1);  // the ceiling glows
+  std::vector<Surface> grouped = alone;
+  for (Surface& s : grouped) s.patchOfElement = groupIntoPatches(s, 0.5);
+  Solver a(alone), b(grouped);
+  EXPECT_EQ(b.patchCount(), 24u);
+  EXPECT_EQ(a.patchCount(), a.elementCount());
+  a.solve(1e-5);
+  b.solve(1e-5);
+  std::printf("substructuring: %llu shots alone, %llu with patches\n", static_cast<unsigned long long>(a.stats().shots),
+              static_cast<unsigned long long>(b.stats().shots));
+  EXPECT_LT(b.stats().shots * 3, a.stats().shots);
+  // The floor's radiance varies over its elements (brighter in the middle), the same either way.
+  const std::span<const glm::dvec3> fa = a.elementRadiance(0), fb = b.elementRadiance(0);
+  double lo = 1e9, hi = 0;
+  for (size_t e = 0; e < fa.size(); ++e) {
+    EXPECT_NEAR(fb[e].x, fa[e].x, 0.01 * fa[e].x) << e;
+    lo = std::min(lo, fa[e].x), hi = std::max(hi, fa[e].x);
+  }
+  EXPECT_GT(hi, 1.2 * lo);
+}
+
+TEST(RadiositySolver, VertexRadianceIsTheAreaWeightedMeanOfItsElements) {
+  // A lamp lights a floor unevenly; each floor vertex gets the mean of its elements by area.
+  const std::vector<Surface> scene{quad({0, 0, 1}, {0, 0.3, 0}, {0.3, 0, 0}, glm::dvec3(0), glm::dvec3(5)),
+                                   rectangle({-1, -1, 0}, {2.5, 0, 0}, {0, 2, 0}, 0.4, glm::dvec3(0.6))};
+  Solver solver(scene);
+  solver.solve(0);
+  const Surface& floor = scene[1];
+  const std::span<const glm::dvec3> elements = solver.elementRadiance(1);
+  std::vector<glm::dvec3> sum(floor.vertices.size(), glm::dvec3(0));
+  std::vector<double> weight(floor.vertices.size(), 0);
+  for (uint32_t e = 0; e < floor.elements.size(); ++e)
+    for (int k = 0; k < (floor.elements[e][3] == kNone ? 3 : 4); ++k) {
+      sum[floor.elements[e][k]] += area(floor, e) * elements[e];
+      weight[floor.elements[e][k]] += area(floor, e);
+    }
+  const std::vector<glm::dvec3> vertices = solver.vertexRadiance(1, false);
+  ASSERT_EQ(vertices.size(), floor.vertices.size());
+  for (size_t v = 0; v < vertices.size(); ++v) EXPECT_NEAR(vertices[v].x, sum[v].x / weight[v], 1e-12 * sum[v].x / weight[v]);
+  // A corner belongs to one element only.
+  uint32_t owner = 0;
+  for (uint32_t e = 0; e < floor.elements.size(); ++e)
+    for (uint32_t c : floor.elements[e])
+      if (c == 0) owner = e;
+  EXPECT_EQ(vertices[0], elements[owner]);
+  // The ambient term adds reflectance x ambient.
+  const std::vector<glm::dvec3> shown = solver.vertexRadiance(1, true);
+  for (size_t v = 0; v < vertices.size(); ++v) EXPECT_NEAR(shown[v].x, vertices[v].x + 0.6 * solver.ambient().x, 1e-12);
+}
+
+// A tiny receiver near the shooter and a huge one far away subtend the same solid angle: they
+// receive the same power per steradian, so their radiances differ by their area ratio (10^10).
+// Their factors are a couple of hemisphere pixels, so pixel counts would be off by up to half.
+TEST(RadiositySolver, TinyAndHugeReceiversAtEqualSolidAngle) {
+  const glm::dvec3 towardTiny = glm::normalize(glm::dvec3(0.5, 0, 1)), towardHuge = glm::normalize(glm::dvec3(-0.5, 0.1, 1));
+  const auto facing = [](glm::dvec3 centre, glm::dvec3 toward, double side) {
+    const glm::dvec3 u = glm::normalize(glm::cross(toward, glm::dvec3(0, 1, 0))) * side;
+    const glm::dvec3 v = glm::cross(u, toward);  // u x v points back along -toward
+    return quad(centre - 0.5 * u - 0.5 * v, u, v, glm::dvec3(0.5));
+  };
+  const double tinySide = 1e-4, hugeSide = 1, tinyDistance = 0.009, hugeDistance = tinyDistance * hugeSide / tinySide;
+  const std::vector<Surface> scene{quad({-5e-4, -5e-4, 0}, {1e-3, 0, 0}, {0, 1e-3, 0}, glm::dvec3(0), glm::dvec3(1)),
+                                   facing(towardTiny * tinyDistance, towardTiny, tinySide),
+                                   facing(towardHuge * hugeDistance, towardHuge, hugeSide)};
+  Solver solver(scene);
+  solver.step();
+  // Expected: rho x E x F x A_s / A_r with F = A_r cos / (pi d^2) (the receivers face the shooter).
+  const double tiny = solver.elementRadiance(1)[0].x, huge = solver.elementRadiance(2)[0].x;
+  const double expectTiny = 0.5 * 1e-6 * towardTiny.z / (kPi * tinyDistance * tinyDistance);
+  const double expectHuge = 0.5 * 1e-6 * towardHuge.z / (kPi * hugeDistance * hugeDistance);
+  std::printf("tiny receiver %.6e (expected %.6e), huge %.6e (expected %.6e), %llu small receivers\n", tiny, expectTiny,
+              huge, expectHuge, static_cast<unsigned long long>(solver.stats().smallReceivers));
+  EXPECT_NEAR(tiny, expectTiny, 0.01 * expectTiny);
+  EXPECT_NEAR(huge, expectHuge, 0.01 * expectHuge);
+}
+
+// A tiny receiver behind an occluder gets nothing, its unoccluded twin gets its share: the item
+// buffer's visibility is read in the right pixel.
+TEST(RadiositySolver, SmallReceiverBehindOccluderIsDark) {
+  const std::vector<Surface> scene{
+      quad({-0.05, -0.05, 0}, {0.1, 0, 0}, {0, 0.1, 0}, glm::dvec3(0), glm::dvec3(1)),
+      quad({0.99, 0.3, 2.01}, {0, 0.02, 0}, {0.02, 0, 0}, glm::dvec3(0.5)),   // behind the occluder
+      quad({-1.01, 0.3, 2.01}, {0, 0.02, 0}, {0.02, 0, 0}, glm::dvec3(0.5)),  // in the open
+      quad({0.3, 0.05, 1.0}, {0, 0.3, 0}, {0.4, 0, 0}, glm::dvec3(0)),        // the occluder, facing down
+  };
+  Solver solver(scene);
+  solver.step();
+  EXPECT_GT(solver.stats().smallReceivers, 0u);
+  EXPECT_EQ(solver.elementRadiance(1)[0].x, 0.0);
+  EXPECT_GT(solver.elementRadiance(2)[0].x, 0.0);
+}
+
+TEST(RadiositySolver, DeterministicAndIndependentOfGraphicsProcessors) {
+  std::vector<Surface> scene = closedBox(1, 0.25, glm::dvec3(0.6), glm::dvec3(0));
+  scene.push_back(rectangle({0.3, 0.3, 0.999}, {0, 0.3, 0}, {0.3, 0, 0}, 0.1, glm::dvec3(0.5), glm::dvec3(4)));
+  SolverSettings two;
+  two.graphicsProcessors = 2;
+  Solver a(scene), b(scene), c(scene, two);
+  a.solve(0.01);
+  b.solve(0.01);
+  c.solve(0.01);
+  for (uint32_t s = 0; s < scene.size(); ++s)
+    for (size_t e = 0; e < scene[s].elements.size(); ++e) {
+      EXPECT_EQ(a.elementRadiance(s)[e], b.elementRadiance(s)[e]);
+      EXPECT_EQ(a.elementRadiance(s)[e], c.elementRadiance(s)[e]);
+    }
+}
+
+TEST(RadiositySolver, RefusesBadInput) {
+  Surface s = quad({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, glm::dvec3(0.5));
+  s.elements[0][2] = 7;
+  EXPECT_THROW(Solver(std::vector<Surface>{s}), std::invalid_argument);
+  s = quad({0, 0, 0}, {1, 0, 0}, {0, 0, 0}, glm::dvec3(0.5));
+  EXPECT_THROW(Solver(std::vector<Surface>{s}), std::invalid_argument);
+  s = quad({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, glm::dvec3(0.5));
+  s.patchOfElement = {0, 1};
+  EXPECT_THROW(Solver(std::vector<Surface>{s}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace radiosity
