@@ -10,6 +10,16 @@ void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& ou
     for (const glm::dvec3& radiance : solver.vertexRadiance(s, true)) out.emplace_back(radiance);
 }
 
+uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
+                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress) {
+  uint64_t shots = 0;
+  while (shots < maxShots && !solver.converged(converge) && solver.step()) {
+    ++shots;
+    if (progress) progress(solver, shots);
+  }
+  return shots;
+}
+
 LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings)
     : surfaces_(std::move(surfaces)), settings_(settings) {
   // The first solver is made here, so bad input throws to the caller rather than on the thread.

@@ -9,6 +9,7 @@
 
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -20,6 +21,11 @@ namespace engine {
 // mesh's vertex order, as DisplayMesh holds them): the solver's vertex radiance plus
 // reflectance times its ambient term.
 void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out);
+
+// Shoots until the unshot fraction is at most `converge` or `maxShots` shots were taken, calling
+// `progress` (when given) after every shot; returns the shots taken.
+uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
+                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress = {});
 
 struct LightingSettings {
   radiosity::SolverSettings solver;

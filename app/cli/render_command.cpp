@@ -54,15 +54,12 @@ int runRender(const RenderOptions& options) {
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = options.threads;
   radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
-  uint64_t shots = 0;
   auto lastReport = start;
-  while (shots < options.maxShots && !solver.converged(options.converge) && solver.step()) {
-    ++shots;
-    if (!options.quiet && std::chrono::duration<double>(Clock::now() - lastReport).count() >= 1) {
-      lastReport = Clock::now();
-      std::cout << "walkrad render: " << shots << " shots, unshot " << 100 * solver.unshotFraction() << "%" << std::endl;
-    }
-  }
+  const uint64_t shots = engine::solveTo(solver, options.converge, options.maxShots, [&](const radiosity::Solver& s, uint64_t n) {
+    if (options.quiet || std::chrono::duration<double>(Clock::now() - lastReport).count() < 1) return;
+    lastReport = Clock::now();
+    std::cout << "walkrad render: " << n << " shots, unshot " << 100 * s.unshotFraction() << "%" << std::endl;
+  });
   engine::displayRadiance(solver, mesh.radiance);
   const double solveMs = millisecondsSince(start);
   if (!options.quiet)

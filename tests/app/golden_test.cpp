@@ -1,0 +1,90 @@
+// Golden images of solved scenes (tests/golden/cases.json): the whole pipeline, from the scene
+// file through the mesher and the radiosity solver to the OSMesa picture, against a reviewed PNG
+// with the case's tolerances. WALKRAD_UPDATE_GOLDENS=1 writes the goldens instead.
+#include "app/gl/headless_render.h"
+#include "engine/display_mesh.h"
+#include "engine/lighting.h"
+#include "engine/meshed_scene.h"
+#include "engine/scene_loader.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace app {
+namespace {
+
+struct GoldenCase {
+  std::string name, scene, camera;
+  int width = 0, height = 0;
+  double converge = 0.01, meanLevels = 0, pixelLevels = 0, pixelShare = 0;
+};
+
+std::vector<GoldenCase> loadCases() {
+  std::ifstream file(std::string(WALKRAD_GOLDEN) + "/cases.json");
+  const nlohmann::json json = nlohmann::json::parse(file);
+  std::vector<GoldenCase> cases;
+  for (const nlohmann::json& c : json.at("cases"))
+    cases.push_back({c.at("name"), c.at("scene"), c.at("camera"), c.at("width"), c.at("height"), c.at("converge"),
+                     c.at("mean_levels"), c.at("pixel_levels"), c.at("pixel_share")});
+  return cases;
+}
+
+ImageRgb8 renderSolved(const GoldenCase& c) {
+  const engine::Scene scene = engine::loadScene(std::string(WALKRAD_ASSETS) + "/" + c.scene);
+  const engine::MeshedScene meshed = engine::meshScene(scene);
+  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  radiosity::Solver solver(engine::radiosityInput(scene, meshed));
+  engine::solveTo(solver, c.converge, UINT64_MAX);
+  EXPECT_LE(solver.unshotFraction(), c.converge);
+  engine::displayRadiance(solver, mesh.radiance);
+  ViewCamera camera;
+  EXPECT_TRUE(chooseCamera(scene, c.camera, camera));
+  return renderHeadless(scene, mesh, camera, c.width, c.height, static_cast<float>(engine::autoExposure(mesh)), false, false).color;
+}
+
+class Golden : public testing::TestWithParam<GoldenCase> {};
+
+TEST_P(Golden, SolvedImageMatchesTheGolden) {
+  const GoldenCase& c = GetParam();
+  const ImageRgb8 image = renderSolved(c);
+  const std::string golden = std::string(WALKRAD_GOLDEN) + "/" + c.name + ".png";
+  if (const char* update = std::getenv("WALKRAD_UPDATE_GOLDENS"); update && std::string(update) == "1") {
+    writePng(golden, image);
+    GTEST_SKIP() << "wrote " << golden;
+  }
+  writePng(std::string(WALKRAD_TEST_OUTPUT) + "/golden-" + c.name + "-actual.png", image);
+  const ImageRgb8 expected = readPng(golden);
+  ASSERT_EQ(image.width, expected.width);
+  ASSERT_EQ(image.height, expected.height);
+
+  // The difference, amplified eight times, beside the actual image for whoever looks.
+  ImageRgb8 difference{image.width, image.height, std::vector<uint8_t>(image.pixels.size())};
+  double sum = 0;
+  size_t offPixels = 0;
+  for (size_t p = 0; p < image.pixels.size(); p += 3) {
+    int worst = 0;
+    for (size_t k = 0; k < 3; ++k) {
+      const int d = std::abs(int{image.pixels[p + k]} - int{expected.pixels[p + k]});
+      sum += d;
+      worst = std::max(worst, d);
+      difference.pixels[p + k] = static_cast<uint8_t>(std::min(255, 8 * d));
+    }
+    offPixels += worst > c.pixelLevels;
+  }
+  writePng(std::string(WALKRAD_TEST_OUTPUT) + "/golden-" + c.name + "-difference.png", difference);
+  const double mean = sum / static_cast<double>(image.pixels.size());
+  const double share = static_cast<double>(offPixels) / static_cast<double>(image.pixels.size() / 3);
+  EXPECT_LE(mean, c.meanLevels) << "mean difference in 8-bit levels";
+  EXPECT_LE(share, c.pixelShare) << "share of pixels more than " << c.pixelLevels << " levels off";
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Golden, testing::ValuesIn(loadCases()),
+                         [](const testing::TestParamInfo<GoldenCase>& param) { return param.param.name; });
+
+}  // namespace
+}  // namespace app
