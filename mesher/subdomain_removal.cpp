@@ -1,5 +1,6 @@
 #include "mesher/subdomain_removal.h"
 
+#include "mesher/fast_atan2.h"
 #include "mesher/triangulate.h"
 
 #include <glm/geometric.hpp>
@@ -52,20 +53,6 @@ void earClipAndMerge(const std::vector<Vec2>& ring, std::vector<RingElement>& ou
       used[t] = true;
     }
   }
-}
-
-// atan2(y, x) for y >= 0 by the polynomial of Abramowitz and Stegun 4.4.49 (error below 2e-8
-// radians): choosing among fans asks for many angles, and libm's atan2 was a tenth of meshing.
-double fastAtan2(double y, double x) {
-  const double ax = std::abs(x);
-  if (y == 0 && ax == 0) return 0;
-  const bool steep = y > ax;
-  const double z = steep ? ax / y : y / ax, z2 = z * z;
-  const double atanZ =
-      z * (1 + z2 * (-0.3333314528 + z2 * (0.1999355085 + z2 * (-0.1420889944 + z2 * (0.1065626393 +
-           z2 * (-0.0752896400 + z2 * (0.0429096138 + z2 * (-0.0161657367 + z2 * 0.0028662257))))))));
-  const double a = steep ? std::numbers::pi / 2 - atanZ : atanZ;
-  return x < 0 ? std::numbers::pi - a : a;
 }
 
 double angleDeg(Vec2 prev, Vec2 at, Vec2 next) {

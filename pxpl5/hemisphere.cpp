@@ -193,4 +193,8 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   return frame;
 }
 
+void HemisphereRenderer::runOnGraphicsProcessors(size_t taskCount, const std::function<void(size_t, int)>& job) {
+  state_->machine.runOnGraphicsProcessors(taskCount, job);
+}
+
 }  // namespace pxpl5

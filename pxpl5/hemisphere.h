@@ -93,6 +93,10 @@ class HemisphereRenderer {
   // The machine's counters for the last frame.
   const FrameCounters& counters() const;
 
+  // The machine's graphics processors for the caller's own work between frames
+  // (Machine::runOnGraphicsProcessors).
+  void runOnGraphicsProcessors(size_t taskCount, const std::function<void(size_t task, int processor)>& job);
+
  private:
   struct State;
   std::unique_ptr<State> state_;

@@ -92,6 +92,10 @@ std::span<const float> Machine::depthPlane() const { return state_->depth; }
 std::span<const uint32_t> Machine::valuePlane() const { return state_->value; }
 const FrameCounters& Machine::counters() const { return state_->counters; }
 
+void Machine::runOnGraphicsProcessors(size_t taskCount, const std::function<void(size_t, int)>& job) {
+  state_->pool.run(taskCount, job);
+}
+
 // ---- renderFrame ---------------------------------------------------------------------------
 
 void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize) {

@@ -124,6 +124,11 @@ class Machine {
   // counters are then unspecified, and the machine stays usable.
   void renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize = 256);
 
+  // Runs a host program on the graphics processors between frames, as the real machine's i860s
+  // ran general code: job(task, processor) for every task in [0, taskCount), taken in order by
+  // whichever processor comes free. The first exception a job throws is rethrown here.
+  void runOnGraphicsProcessors(size_t taskCount, const std::function<void(size_t task, int processor)>& job);
+
   // The last frame's result and counters.
   std::span<const float> depthPlane() const;
   std::span<const uint32_t> valuePlane() const;

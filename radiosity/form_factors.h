@@ -44,5 +44,8 @@ struct Receiver {
 // piece's share of the shooter's area.
 void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
                    double farRatio, double ratio, int splits, double& front, double& back);
+// The same for a piece whose centroid and radius (about the centroid) the caller knows.
+void areaToPolygon(const Polygon3& piece, const glm::dvec3& centre, double radius, double weight, const glm::dvec3& normal,
+                   const Receiver& r, double farRatio, double ratio, int splits, double& front, double& back);
 
 }  // namespace radiosity

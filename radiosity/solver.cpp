@@ -102,8 +102,17 @@ struct Solver::State {
     glm::dvec3 front, back;  // per channel
   };
   std::vector<glm::dvec3> shares;
-  std::vector<NewFactor> newFactors;
-  std::vector<glm::dvec3> targets;
+  // The receivers of a shot are judged in a fixed number of chunks, whatever the number of
+  // graphics processors, and added up in chunk order: the same sums with any thread count.
+  static constexpr size_t kReceiverChunks = 16;
+  struct ReceiverChunk {
+    std::vector<NewFactor> factors;
+    std::vector<glm::dvec3> targets;  // visibility's scratch
+    double replacedPixels = 0;
+    glm::dvec3 replacedNew{0};
+    uint64_t near = 0, small = 0;
+  };
+  std::array<ReceiverChunk, kReceiverChunks> chunks;
 
   double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
   Stats stats;
@@ -114,7 +123,11 @@ struct Solver::State {
 
   void build(std::span<const Surface> input);
   double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
-                    const glm::dvec3& eyeNormal, uint32_t j);
+                    const glm::dvec3& eyeNormal, uint32_t j, std::vector<glm::dvec3>& targets) const;
+  // New factors for the near and small receivers among elements [begin, end) of shooter p's
+  // frame (see shoot).
+  void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
+                      uint32_t end, ReceiverChunk& out);
   double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
   void choosePoint(uint32_t p);
   void shoot(uint32_t p);
@@ -217,7 +230,6 @@ void Solver::State::build(std::span<const Surface> input) {
   pointChosen.assign(patchTotal, 0);
   pixelFactor.assign(polygon.size(), 0.0);
   replaced.assign(polygon.size(), 0);
-  newFactors.reserve(polygon.size());
 }
 
 // ---- receivers of one shot ---------------------------------------------------------------------
@@ -226,7 +238,7 @@ void Solver::State::build(std::span<const Surface> input) {
 // factor where j is big enough to own pixels, else the item buffer at its centroid and at points
 // a quarter of the way in from each corner.
 double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
-                                 const glm::dvec3& eyeNormal, uint32_t j) {
+                                 const glm::dvec3& eyeNormal, uint32_t j, std::vector<glm::dvec3>& targets) const {
   const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
   if (unoccluded >= settings.smallReceiverPixels * pixelShare) {
     const double ratio = pixelFactor[j] / unoccluded;
@@ -280,6 +292,54 @@ void Solver::State::choosePoint(uint32_t p) {
   ++stats.movedShooters;
 }
 
+void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes,
+                                   uint32_t begin, uint32_t end, ReceiverChunk& out) {
+  out.factors.clear();
+  out.replacedPixels = 0;
+  out.replacedNew = glm::dvec3(0);
+  out.near = out.small = 0;
+  const uint32_t si = patchSurface[p];
+  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
+  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
+  const double nearLimit = settings.nearFieldRatio * patchRadius[p];
+  const double smallLimit = settings.smallReceiverPixels * pixelShare;
+  for (uint32_t j = begin; j < end; ++j) {
+    if (surfaceOf[j] == si) continue;                                  // a plane does not see itself
+    const glm::dvec3 toward = centre[j] - eye;
+    if (glm::dot(toward, eyeNormal) < -radius[j]) continue;            // wholly below the horizon
+    const double gap = glm::length(toward) - radius[j];
+    NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
+    if (gap < nearLimit) {
+      // Visibility first: a receiver the shooter's centre cannot see needs no integral.
+      const double v = visibility(frame, axes, eye, eyeNormal, j, out.targets);
+      if (v > 0) {
+        const Receiver r{polygon[j], centre[j], radius[j], normal[j], offset[j]};
+        for (size_t k = 0; k < own.size(); ++k) {
+          double front = 0, back = 0;
+          areaToPolygon(polygon[own[k]], centre[own[k]], radius[own[k]], 1.0, eyeNormal, r, settings.nearFieldRatio,
+                        settings.pieceRatio, settings.maxShooterSplits, front, back);
+          f.front += shares[k] * front;
+          f.back += shares[k] * back;
+        }
+        f.front *= v, f.back *= v;
+      }
+      ++out.near;
+    } else {
+      // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
+      if (area[j] >= smallLimit * kPi * gap * gap) continue;
+      const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
+      if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
+      const double v = unoccluded > 0 ? visibility(frame, axes, eye, eyeNormal, j, out.targets) : 0;
+      (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
+      ++out.small;
+    }
+    replaced[j] = 1;
+    out.replacedPixels += pixelFactor[j];
+    out.replacedNew += f.front + f.back;
+    out.factors.push_back(f);
+  }
+}
+
 void Solver::State::shoot(uint32_t p) {
   if (!pointChosen[p]) choosePoint(p);
   const uint32_t si = patchSurface[p];
@@ -310,45 +370,19 @@ void Solver::State::shoot(uint32_t p) {
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(eyeNormal));
 
   // Near and small receivers get new factors, per channel (near ones weigh the shooter's
-  // elements by their unshot light).
-  newFactors.clear();
+  // elements by their unshot light), judged on the graphics processors.
+  const auto elements = static_cast<uint32_t>(polygon.size());
+  renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
+    judgeReceivers(p, frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
+                   static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunks[c]);
+  });
   double replacedPixels = 0;
   glm::dvec3 replacedNew{0};
-  const double nearLimit = settings.nearFieldRatio * patchRadius[p];
-  const double smallLimit = settings.smallReceiverPixels * pixelShare;
-  for (uint32_t j = 0; j < polygon.size(); ++j) {
-    if (surfaceOf[j] == si) continue;                                  // a plane does not see itself
-    const glm::dvec3 toward = centre[j] - eye;
-    if (glm::dot(toward, eyeNormal) < -radius[j]) continue;            // wholly below the horizon
-    const double gap = glm::length(toward) - radius[j];
-    NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
-    if (gap < nearLimit) {
-      const Receiver r{polygon[j], centre[j], radius[j], normal[j], offset[j]};
-      for (size_t k = 0; k < own.size(); ++k) {
-        double front = 0, back = 0;
-        areaToPolygon(polygon[own[k]], 1.0, eyeNormal, r, settings.nearFieldRatio, settings.pieceRatio,
-                      settings.maxShooterSplits, front, back);
-        f.front += shares[k] * front;
-        f.back += shares[k] * back;
-      }
-      if (channelSum(f.front + f.back) > 0) {
-        const double v = visibility(frame, axes, eye, eyeNormal, j);
-        f.front *= v, f.back *= v;
-      }
-      ++stats.nearReceivers;
-    } else {
-      // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
-      if (area[j] >= smallLimit * kPi * gap * gap) continue;
-      const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
-      if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
-      const double v = unoccluded > 0 ? visibility(frame, axes, eye, eyeNormal, j) : 0;
-      (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
-      ++stats.smallReceivers;
-    }
-    replaced[j] = 1;
-    replacedPixels += pixelFactor[j];
-    replacedNew += f.front + f.back;
-    newFactors.push_back(f);
+  for (const ReceiverChunk& chunk : chunks) {
+    replacedPixels += chunk.replacedPixels;
+    replacedNew += chunk.replacedNew;
+    stats.nearReceivers += chunk.near;
+    stats.smallReceivers += chunk.small;
   }
 
   // Keep the energy, per channel: the difference comes out of everything else the centre saw,
@@ -371,7 +405,8 @@ void Solver::State::shoot(uint32_t p) {
     }
   }
   stats.renormalisedShots += renormalised;
-  for (NewFactor& f : newFactors) f.front *= newScale, f.back *= newScale;
+  for (ReceiverChunk& chunk : chunks)
+    for (NewFactor& f : chunk.factors) f.front *= newScale, f.back *= newScale;
 
   // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
   const auto deposit = [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
@@ -389,11 +424,13 @@ void Solver::State::shoot(uint32_t p) {
     if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
     else deposit(f.id, glm::dvec3(0), factor);
   }
-  for (const NewFactor& f : newFactors) deposit(f.element, f.front, f.back);
+  for (const ReceiverChunk& chunk : chunks)
+    for (const NewFactor& f : chunk.factors) deposit(f.element, f.front, f.back);
   stats.escapedPower += power * (sky * scale);
 
   for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = 0;
-  for (const NewFactor& f : newFactors) replaced[f.element] = 0;
+  for (const ReceiverChunk& chunk : chunks)
+    for (const NewFactor& f : chunk.factors) replaced[f.element] = 0;
 }
 
 // ---- Solver --------------------------------------------------------------------------------------

@@ -1,0 +1,24 @@
+// atan2 for hot loops that choose by angles or sum many of them: the polynomial of Abramowitz and
+// Stegun 4.4.49, error below 2e-8 radians, several times faster than libm's. The mesher's choice
+// of fans and the radiosity solver's contour integrals use it.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+
+namespace mesher {
+
+// atan2(y, x) for y >= 0, in [0, pi]; 0 for (0, 0).
+inline double fastAtan2(double y, double x) {
+  const double ax = std::abs(x);
+  if (y == 0 && ax == 0) return 0;
+  const bool steep = y > ax;
+  const double z = steep ? ax / y : y / ax, z2 = z * z;
+  const double atanZ =
+      z * (1 + z2 * (-0.3333314528 + z2 * (0.1999355085 + z2 * (-0.1420889944 + z2 * (0.1065626393 +
+           z2 * (-0.0752896400 + z2 * (0.0429096138 + z2 * (-0.0161657367 + z2 * 0.0028662257))))))));
+  const double a = steep ? std::numbers::pi / 2 - atanZ : atanZ;
+  return x < 0 ? std::numbers::pi - a : a;
+}
+
+}  // namespace mesher
