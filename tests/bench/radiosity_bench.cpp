@@ -2,8 +2,8 @@
 // second for shipped scenes meshed at their patch sizes, shooting patches twice that across,
 // with one and two pxpl5 graphics processors. Meshing is outside the timing.
 // Run: build/tests/walkrad_bench --benchmark_filter=radiosity
+#include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
-#include "engine/surface_mesh.h"
 #include "radiosity/radiosity.h"
 
 #include <benchmark/benchmark.h>
@@ -12,23 +12,11 @@
 
 namespace {
 
-const char* const kScenes[] = {"cornell.json", "office.json"};
+const char* const kScenes[] = {"cornell.json", "office.json", "kitchen.json"};
 
 std::vector<radiosity::Surface> meshedScene(const char* name) {
   const engine::Scene scene = engine::loadScene(std::string(WALKRAD_ASSETS) + "/" + name);
-  mesher::Mesher mesher;
-  std::vector<radiosity::Surface> surfaces;
-  for (const engine::Surface& in : scene.surfaces) {
-    engine::SurfaceMesh m = engine::meshSurface(in, mesher);
-    radiosity::Surface& s = surfaces.emplace_back();
-    s.vertices = std::move(m.positions);
-    s.elements = std::move(m.mesh.elements);
-    s.normal = in.normal;
-    s.reflectance = scene.materials[in.material].reflectance;
-    s.emission = scene.materials[in.material].emission;
-    s.patchOfElement = radiosity::groupIntoPatches(s, 2 * in.patchSize);
-  }
-  return surfaces;
+  return engine::radiosityInput(scene, engine::meshScene(scene));
 }
 
 // range(0): scene; range(1): graphics processors.
@@ -53,6 +41,6 @@ void radiosityToOnePercent(benchmark::State& state) {
   state.counters["shots/s"] = static_cast<double>(stats.shots) / stats.seconds;
   state.counters["frames"] = static_cast<double>(stats.frames);
 }
-BENCHMARK(radiosityToOnePercent)->ArgsProduct({{0, 1}, {1, 2}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(radiosityToOnePercent)->ArgsProduct({{0, 1, 2}, {1, 2}})->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

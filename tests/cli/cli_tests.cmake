@@ -46,6 +46,14 @@ walkrad_cli_test(render_all_outputs 0
                       --linear ${out}/cli-cornell.pfm --stats ${out}/cli-cornell.json --width 200 --height 150 --wireframe
                  FILE ${out}/cli-cornell.pfm)
 
+# The solve before the picture: stopped by --max-shots, or by --converge (progress on stdout).
+walkrad_cli_test(render_max_shots 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-max-shots.png
+                 --max-shots 20 --width 64 --height 48 STDOUT "solved in [0-9.e-]+ s: 20 shots, unshot")
+walkrad_cli_test(render_converge 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-converge.png
+                 --converge 0.3 --width 64 --height 48 STDOUT "solved in [0-9.e-]+ s: [0-9]+ shots, unshot (2[0-9]|1[0-9]|[0-9])(\\.[0-9]+)?%")
+walkrad_cli_test(render_bad_converge 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png --converge 2
+                 STDERR "converge")
+
 # walkrad mesh: polygon cases and scenes.
 walkrad_cli_test(mesh_polygon_case 0 ARGS mesh ${cli_dir}/wall_with_window.json --stats ${out}/mesh-wall.json --dump ${out}/mesh-wall-dump.json
                  STDOUT "0 T-vertices" FILE ${out}/mesh-wall-dump.json)
