@@ -77,29 +77,26 @@ struct SquaresCase {
   double patchEdge;  // 0: elements shoot alone
 };
 
-class RadiositySquares : public ::testing::TestWithParam<SquaresCase> {};
+class RadiositySquares : public ::testing::TestWithParam<SquaresCase> {
+ protected:
+  // The unit square at the origin in the x-y plane emits; a unit square at `corner` spanned by
+  // `u` and `v` receives; the factor through the solver is within 1% of `exact`.
+  void expectFactor(const char* what, glm::dvec3 corner, glm::dvec3 u, glm::dvec3 v, double exact) {
+    const SquaresCase c = GetParam();
+    const Surface emitter = rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, c.elementSize, glm::dvec3(0), glm::dvec3(1));
+    const Surface receiver = rectangle(corner, u, v, c.elementSize, glm::dvec3(0.5));
+    const double f = factorThroughSolver(emitter, receiver, c.patchEdge);
+    std::printf("%s squares, elements %g, patches %g: F = %.5f (exact %.5f, %+.2f%%)\n", what, c.elementSize, c.patchEdge, f,
+                exact, 100 * (f / exact - 1));
+    EXPECT_NEAR(f, exact, 0.01 * exact);
+  }
+};
 
 // Two unit squares facing each other a unit apart: F = 0.19982 (Siegel and Howell).
-TEST_P(RadiositySquares, Opposed) {
-  const SquaresCase c = GetParam();
-  const Surface emitter = rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, c.elementSize, glm::dvec3(0), glm::dvec3(1));
-  const Surface receiver = rectangle({0, 0, 1}, {0, 1, 0}, {1, 0, 0}, c.elementSize, glm::dvec3(0.5));
-  const double f = factorThroughSolver(emitter, receiver, c.patchEdge);
-  std::printf("opposed squares, elements %g, patches %g: F = %.5f (exact 0.19982, %+.2f%%)\n", c.elementSize,
-              c.patchEdge, f, 100 * (f / 0.19982 - 1));
-  EXPECT_NEAR(f, 0.19982, 0.01 * 0.19982);
-}
+TEST_P(RadiositySquares, Opposed) { expectFactor("opposed", {0, 0, 1}, {0, 1, 0}, {1, 0, 0}, 0.19982); }
 
 // Two unit squares at a right angle sharing an edge: F = 0.20004.
-TEST_P(RadiositySquares, Perpendicular) {
-  const SquaresCase c = GetParam();
-  const Surface emitter = rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, c.elementSize, glm::dvec3(0), glm::dvec3(1));
-  const Surface receiver = rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, c.elementSize, glm::dvec3(0.5));
-  const double f = factorThroughSolver(emitter, receiver, c.patchEdge);
-  std::printf("perpendicular squares, elements %g, patches %g: F = %.5f (exact 0.20004, %+.2f%%)\n", c.elementSize,
-              c.patchEdge, f, 100 * (f / 0.20004 - 1));
-  EXPECT_NEAR(f, 0.20004, 0.01 * 0.20004);
-}
+TEST_P(RadiositySquares, Perpendicular) { expectFactor("perpendicular", {0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 0.20004); }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, RadiositySquares,
                          ::testing::Values(SquaresCase{1, 0}, SquaresCase{0.25, 0}, SquaresCase{0.25, 0.5},
