@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   renderCommand->add_option("--patch-size", render.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
   renderCommand->add_option("--converge", render.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
   renderCommand->add_option("--max-shots", render.maxShots, "stop after this many shots even if not converged");
   renderCommand->add_option("--threads", render.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
       ->check(CLI::Range(1, 64));

@@ -6,8 +6,9 @@ namespace engine {
 
 void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out) {
   out.clear();
+  const glm::dvec3 ambient = solver.ambient();
   for (uint32_t s = 0; s < solver.surfaceCount(); ++s)
-    for (const glm::dvec3& radiance : solver.vertexRadiance(s, true)) out.emplace_back(radiance);
+    for (const glm::dvec3& radiance : solver.vertexRadiance(s, ambient)) out.emplace_back(radiance);
 }
 
 uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
@@ -31,28 +32,59 @@ LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const L
 void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
   using Clock = std::chrono::steady_clock;
   auto lastPublish = Clock::now();
-  bool done = solver->converged(settings_.converge);
+  bool done = solver->converged(settings_.converge), unpublished = false, failed = false;
   for (;;) {
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || restart_ || (!paused_ && !done); });
+      const auto ready = [&] { return stop_ || restart_ || (!paused_ && !done && !failed); };
+      if (!ready() && unpublished) {
+        // About to wait (paused): the shots since the last snapshot are shown first.
+        lock.unlock();
+        publish(*solver, done);
+        unpublished = false;
+        lock.lock();
+      }
+      wake_.wait(lock, ready);
       if (stop_) return;
       if (restart_) {
         restart_ = false;
         lock.unlock();
-        solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
-        done = solver->converged(settings_.converge);
-        publish(*solver, done);
+        try {
+          solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
+          done = solver->converged(settings_.converge);
+          failed = unpublished = false;
+          publish(*solver, done);
+        } catch (const std::exception& e) {
+          failed = true;
+          publishError(e.what());
+        }
         continue;
       }
     }
-    done = !solver->step() || solver->converged(settings_.converge);
-    const auto now = Clock::now();
-    if (done || std::chrono::duration<double>(now - lastPublish).count() >= settings_.publishSeconds) {
-      publish(*solver, done);
-      lastPublish = now;
+    // A failed shot leaves the solver half-updated: it shoots no more until a restart.
+    try {
+      done = !solver->step() || solver->converged(settings_.converge);
+      unpublished = true;
+      const auto now = Clock::now();
+      if (done || std::chrono::duration<double>(now - lastPublish).count() >= settings_.publishSeconds) {
+        publish(*solver, done);
+        unpublished = false;
+        lastPublish = now;
+      }
+    } catch (const std::exception& e) {
+      failed = true;
+      publishError(e.what());
     }
   }
+}
+
+void LightingThread::publishError(const std::string& what) {
+  std::lock_guard lock(mutex_);
+  auto snapshot = std::make_shared<LightingSnapshot>(*latest_);
+  snapshot->error = what;
+  snapshot->converged = false;
+  snapshot->version = ++version_;
+  latest_ = std::move(snapshot);
 }
 
 LightingThread::~LightingThread() {
@@ -70,18 +102,21 @@ std::shared_ptr<const LightingSnapshot> LightingThread::latest() const {
 }
 
 void LightingThread::setPaused(bool paused) {
+  std::shared_ptr<const LightingSnapshot> current;
   {
     std::lock_guard lock(mutex_);
     paused_ = paused;
+    current = latest_;
   }
   wake_.notify_all();
+  // The newest snapshot says so at once; copied outside the lock, so publish never waits on it.
+  if (!current || current->paused == paused) return;
+  auto copy = std::make_shared<LightingSnapshot>(*current);
+  copy->paused = paused;
   std::lock_guard lock(mutex_);
-  if (latest_ && latest_->paused != paused) {
-    auto copy = std::make_shared<LightingSnapshot>(*latest_);
-    copy->paused = paused;
-    copy->version = ++version_;
-    latest_ = std::move(copy);
-  }
+  if (latest_ != current) return;  // the thread has published since, with the flag
+  copy->version = ++version_;
+  latest_ = std::move(copy);
 }
 
 void LightingThread::restart() {

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct LightingSnapshot {
   double shotsPerSecond = 0;
   size_t elements = 0, patches = 0;
   bool converged = false, paused = false;
+  // Set when a shot or a restart failed (out of memory, no threads): shooting has stopped and
+  // only a restart tries again. The radiance is the last good one.
+  std::string error;
 };
 
 class LightingThread {
@@ -55,14 +59,15 @@ class LightingThread {
   // The newest snapshot (the first is published before the first shot). Never waits for a shot.
   std::shared_ptr<const LightingSnapshot> latest() const;
 
-  // Pausing takes effect after the shot in flight; restarting throws the solution away and
-  // starts again from the emitters.
+  // Pausing takes effect after the shot in flight (whose light the paused snapshot shows);
+  // restarting throws the solution away and starts again from the emitters.
   void setPaused(bool paused);
   void restart();
 
  private:
   void run(std::unique_ptr<radiosity::Solver> solver);
   void publish(const radiosity::Solver& solver, bool converged);
+  void publishError(const std::string& what);
 
   const std::vector<radiosity::Surface> surfaces_;
   const LightingSettings settings_;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
+#include <string>
 
 namespace mesher {
 
@@ -439,6 +440,10 @@ std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int dep
 }
 
 bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
+  // Deeper trees would lose exact quadrant corners, and overflow the walks' fixed stacks.
+  if (maxDepth < 0 || maxDepth > kDeepestTree || depth < 0 || depth > maxDepth)
+    throw std::invalid_argument("quadtree depth " + std::to_string(depth) + " of " + std::to_string(maxDepth) +
+                                " outside 0.." + std::to_string(kDeepestTree));
   tree.maxDepth = maxDepth;
   tree.gridSnap = gridSnap;
   tree.complete = false;

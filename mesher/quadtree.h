@@ -133,6 +133,7 @@ void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, Quad
 // within maxDepth levels (the caller builds a deeper tree: vertices are never merged).
 std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap = 1e-6);
 // The same over `tree.input`, reusing the tree's memory; false where the first form gives nothing.
+// Both throw std::invalid_argument for a maxDepth above kDeepestTree (or depth outside 0..maxDepth).
 bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap);
 
 // A polygon's tree for a patch size: the frame of 5.1, the depth of 5.2, and a maximum depth

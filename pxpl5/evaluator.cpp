@@ -46,14 +46,14 @@ template <bool kQuadratic>
     float* __restrict depth = memory.depth + rowStart;
     uint32_t* __restrict values = memory.value + rowStart;
     // The first edge enables the pixels where it is >= 0; each further edge disables more.
+    for (int i = 0; i < width; ++i) on[i] = ~0u;
     for (uint32_t k = 0; k < n; ++k) {
       const RowTerms r = rowTerms(edges[k], fy);
-      const uint32_t keep = k == 0 ? ~0u : 0u;  // the first edge does not read the flags
       for (int i = 0; i < width; ++i) {
         float v = r.a * xs[i];
         if constexpr (kQuadratic) v = v + r.d * (xs[i] * xs[i]);
         v = (v + r.c) + r.t * term[i];
-        on[i] = ((on[i] | keep) & (v >= 0 ? ~0u : 0u));
+        on[i] &= v >= 0 ? ~0u : 0u;
       }
     }
     // Depth: enabled pixels where the primitive is nearer take its depth and value.
@@ -150,7 +150,8 @@ void evaluateReference(const SetupPrimitive& primitive, const Expression* edges,
 
 // Compiled twice, for AVX2 (eight lanes) and for the build's baseline (SSE2, four), the choice
 // made once at load time from the CPU: the default build must run on any x86-64.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// (ThreadSanitizer's runtime is not ready when the clone's resolver runs at load time.)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
 [[gnu::target_clones("avx2", "default")]]
 #endif
 void evaluateVector(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,

@@ -111,7 +111,8 @@ class Solver {
   // Shoots nextShooter()'s unshot light: a hemisphere frame at the patch's centre over every
   // element, near and small receivers corrected (see solver.cpp), and the reflected part
   // deposited as radiance on each receiver and as unshot light on its patch. Returns false and
-  // does nothing when there is nothing left to shoot.
+  // does nothing when there is nothing left to shoot. Throws only what runs out (memory,
+  // threads); the solver is then half-way through a shot and must be thrown away.
   bool step();
 
   // Unshot power over emitted power, summed over channels; 0 for a scene that emits nothing.
@@ -133,6 +134,9 @@ class Solver {
   // `withAmbient`, reflectance x ambient() is added (the display's estimate before
   // convergence). Vertices used by no element get 0.
   std::vector<glm::dvec3> vertexRadiance(uint32_t surface, bool withAmbient) const;
+  // The same with reflectance x `ambient` added (ambient() computed once for many surfaces: it
+  // looks at every patch).
+  std::vector<glm::dvec3> vertexRadiance(uint32_t surface, const glm::dvec3& ambient) const;
 
   const Stats& stats() const;
   std::span<const ShotRecord> shotHistory() const;

@@ -294,10 +294,11 @@ void Solver::State::choosePoint(uint32_t p) {
 
 void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes,
                                    uint32_t begin, uint32_t end, ReceiverChunk& out) {
+  // Sums in locals, stored once: the chunks sit side by side and are judged on different threads.
   out.factors.clear();
-  out.replacedPixels = 0;
-  out.replacedNew = glm::dvec3(0);
-  out.near = out.small = 0;
+  double replacedPixels = 0;
+  glm::dvec3 replacedNew{0};
+  uint64_t nearCount = 0, smallCount = 0;
   const uint32_t si = patchSurface[p];
   const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
@@ -323,7 +324,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
         }
         f.front *= v, f.back *= v;
       }
-      ++out.near;
+      ++nearCount;
     } else {
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
@@ -331,13 +332,17 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
       const double v = unoccluded > 0 ? visibility(frame, axes, eye, eyeNormal, j, out.targets) : 0;
       (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
-      ++out.small;
+      ++smallCount;
     }
     replaced[j] = 1;
-    out.replacedPixels += pixelFactor[j];
-    out.replacedNew += f.front + f.back;
+    replacedPixels += pixelFactor[j];
+    replacedNew += f.front + f.back;
     out.factors.push_back(f);
   }
+  out.replacedPixels = replacedPixels;
+  out.replacedNew = replacedNew;
+  out.near = nearCount;
+  out.small = smallCount;
 }
 
 void Solver::State::shoot(uint32_t p) {
@@ -493,6 +498,10 @@ glm::dvec3 Solver::ambient() const {
 }
 
 std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, bool withAmbient) const {
+  return vertexRadiance(surface, withAmbient ? ambient() : glm::dvec3(0));
+}
+
+std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec3& ambientTerm) const {
   const State& st = *state_;
   const State::SurfaceData& s = st.surfaces.at(surface);
   std::vector<glm::dvec3> sum(s.vertexCount, glm::dvec3(0));
@@ -504,7 +513,7 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, bool withAmbien
       weight[s.corners[e][k]] += st.area[j];
     }
   }
-  const glm::dvec3 extra = withAmbient ? s.reflectance * ambient() : glm::dvec3(0);
+  const glm::dvec3 extra = s.reflectance * ambientTerm;
   for (size_t v = 0; v < sum.size(); ++v)
     if (weight[v] > 0) sum[v] = sum[v] / weight[v] + extra;
   return sum;

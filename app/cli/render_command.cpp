@@ -30,10 +30,11 @@ int runRender(const RenderOptions& options) {
     std::cerr << "walkrad render: nothing to write: give --out FILE.png and/or --linear FILE.pfm\n";
     return 2;
   }
-  for (const std::string& file : {options.out, options.linear, options.stats})
-    if (!file.empty()) checkCanWrite(file);
   auto start = Clock::now();
   engine::Scene scene = engine::loadScene(options.scene);
+  // Outputs are checked after the scene (bad input is exit 2 first) and before the long part.
+  for (const std::string& file : {options.out, options.linear, options.stats})
+    if (!file.empty()) checkCanWrite(file);
   if (options.patchSize)
     for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
   const double loadMs = millisecondsSince(start);

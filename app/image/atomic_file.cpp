@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace app {
@@ -24,6 +25,9 @@ void writeFileAtomically(const std::string& path, std::string_view bytes) {
 }
 
 void checkCanWrite(const std::string& path) {
+  struct stat info {};
+  if (path.empty() || path.back() == '/' || (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)))
+    throw std::runtime_error(path + ": cannot create: " + std::strerror(EISDIR));
   const std::string::size_type slash = path.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
   if (::access(folder.c_str(), W_OK | X_OK) != 0) throw std::runtime_error(path + ": cannot create: " + std::strerror(errno));

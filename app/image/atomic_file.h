@@ -11,8 +11,9 @@ namespace app {
 // any, is then untouched and no temporary file is left behind.
 void writeFileAtomically(const std::string& path, std::string_view bytes);
 
-// Throws as writeFileAtomically would when `path`'s folder takes no new file (missing, not
-// writable), so a long computation can fail before it starts rather than after. Creates nothing.
+// Throws as writeFileAtomically would when `path` cannot become a file: its folder is missing or
+// not writable, or the path names a folder. A long computation can then fail before it starts
+// rather than after. Creates nothing.
 void checkCanWrite(const std::string& path);
 
 }  // namespace app

@@ -61,6 +61,8 @@ class ProgressLine {
  public:
   explicit ProgressLine(std::string scene) : scene_(std::move(scene)) {}
   void report(const engine::LightingSnapshot& s) {
+    if (!s.error.empty() && s.error != errorShown_) std::cerr << "walkrad view: the solver stopped: " << s.error << std::endl;
+    errorShown_ = s.error;
     const double now = glfwGetTime();
     if (s.converged && !convergedShown_) {
       std::cout << "walkrad view: " << scene_ << ": converged after " << s.shots << " shots in " << s.solveSeconds
@@ -75,7 +77,7 @@ class ProgressLine {
   }
 
  private:
-  std::string scene_;
+  std::string scene_, errorShown_;
   double last_ = 0;
   bool convergedShown_ = false;
 };

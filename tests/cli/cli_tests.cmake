@@ -53,6 +53,12 @@ walkrad_cli_test(render_converge 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/corn
                  --converge 0.3 --width 64 --height 48 STDOUT "solved in [0-9.e-]+ s: [0-9]+ shots, unshot (2[0-9]|1[0-9]|[0-9])(\\.[0-9]+)?%")
 walkrad_cli_test(render_bad_converge 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png --converge 2
                  STDERR "converge")
+walkrad_cli_test(render_zero_converge 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png --converge 0
+                 STDERR "converge")
+walkrad_cli_test(render_out_is_a_folder 1 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}
+                 STDERR "cannot create: Is a directory")
+walkrad_cli_test(render_missing_scene_first 2 ARGS render ${out}/no-such-scene.json --out ${out}/no/such/dir/x.png
+                 STDERR "no-such-scene.json")
 
 # walkrad mesh: polygon cases and scenes.
 walkrad_cli_test(mesh_polygon_case 0 ARGS mesh ${cli_dir}/wall_with_window.json --stats ${out}/mesh-wall.json --dump ${out}/mesh-wall-dump.json

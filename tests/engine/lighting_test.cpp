@@ -74,5 +74,21 @@ TEST(Lighting, PauseStopsShootingAndRestartStartsOver) {
   EXPECT_LT(restarted->shots, before);
 }
 
+// Snapshots normally come at most so often; a pause shows the shots since the last one anyway.
+TEST(Lighting, APausedSnapshotShowsEveryShot) {
+  const Scene scene = loadAsset("cornell.json");
+  const MeshedScene meshed = meshScene(scene);
+  LightingSettings settings;
+  settings.converge = 1e-6;
+  settings.publishSeconds = 1e9;  // no snapshot but the first, unless pausing makes one
+  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(lighting.latest()->shots, 0u);
+  lighting.setPaused(true);
+  const auto paused = waitFor(lighting, [](const LightingSnapshot& s) { return s.paused && s.shots > 0; });
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_EQ(lighting.latest()->shots, paused->shots);  // nothing shot since
+}
+
 }  // namespace
 }  // namespace engine
