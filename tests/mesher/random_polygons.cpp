@@ -23,15 +23,28 @@ Ring2 ringAround(std::mt19937& random, Vec2 center, double radius, int points, d
   return ring;
 }
 
+// An outer ring of `points` about a random centre up to `offset` from the origin, of radius 1
+// to 101 (ringAround's jitter and nearest).
+struct Outline {
+  Ring2 ring;
+  Vec2 center;
+  double radius;
+};
+Outline randomOutline(std::mt19937& random, double offset, int points, double jitter, double nearest) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double radius = 1 + 100 * unit(random);
+  const Vec2 center{2 * offset * (unit(random) - 0.5), 2 * offset * (unit(random) - 0.5)};
+  return {ringAround(random, center, radius, points, jitter, nearest), center, radius};
+}
+
 }  // namespace
 
 PolygonWithHoles randomPolygonWithHoles(std::mt19937& random, int trial, double offset) {
   std::uniform_real_distribution<double> unit(0, 1);
   PolygonWithHoles p;
   const int sides = 3 + trial % 9;
-  const double radius = 1 + 100 * unit(random);
-  const Vec2 center{2 * offset * (unit(random) - 0.5), 2 * offset * (unit(random) - 0.5)};
-  p.outer = ringAround(random, center, radius, sides, 0.3, 1);
+  const auto [outer, center, radius] = randomOutline(random, offset, sides, 0.3, 1);
+  p.outer = outer;
   // Holes in the cells of a square grid inside the largest circle about the centre.
   double clearance = radius;
   for (int i = 0; i < sides; ++i) {
@@ -56,9 +69,8 @@ PolygonWithHoles randomStarPolygon(std::mt19937& random, int trial, double offse
   std::uniform_real_distribution<double> unit(0, 1);
   PolygonWithHoles p;
   const int points = 6 + trial % 35;
-  const double radius = 1 + 100 * unit(random);
-  const Vec2 center{2 * offset * (unit(random) - 0.5), 2 * offset * (unit(random) - 0.5)};
-  p.outer = ringAround(random, center, radius, points, 0.8, 0.3);
+  const auto [outer, center, radius] = randomOutline(random, offset, points, 0.8, 0.3);
+  p.outer = outer;
   // Angle gaps stay under 108 degrees, so the disk of 0.3 x 0.58 x radius is inside.
   const double clear = 0.3 * 0.58 * radius;
   const int holes = trial % 4;
