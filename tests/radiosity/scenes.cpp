@@ -1,8 +1,7 @@
 #include "tests/radiosity/scenes.h"
 
+#include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
-#include "engine/surface_mesh.h"
-#include "mesher/mesher.h"
 
 #include <glm/geometric.hpp>
 
@@ -47,17 +46,8 @@ glm::dvec3 areaTimesRadiance(const Solver& solver, const Surface& surface, uint3
 
 std::vector<Surface> cornellBox() {
   const engine::Scene scene = engine::loadScene(WALKRAD_ASSETS "/cornell.json");
-  mesher::Mesher mesher;
-  std::vector<Surface> surfaces;
-  for (const engine::Surface& in : scene.surfaces) {
-    engine::SurfaceMesh m = engine::meshSurface(in, mesher);
-    Surface& s = surfaces.emplace_back();
-    s.vertices = std::move(m.positions);
-    s.elements = std::move(m.mesh.elements);
-    s.normal = in.normal;
-    s.reflectance = scene.materials[in.material].reflectance;
-    s.emission = scene.materials[in.material].emission;
-  }
+  std::vector<Surface> surfaces = engine::radiosityInput(scene, engine::meshScene(scene));
+  for (Surface& s : surfaces) s.patchOfElement.clear();  // each element its own patch; tests group as they need
   return surfaces;
 }
 
