@@ -175,7 +175,7 @@ TEST(RadiosityCornell, AgreesWithPathTracer) {
       {"short block top", {185, 165, 170}},   {"tall block top", {370, 330, 350}},
       // The short block's face toward the camera, lit only by light bounced off the floor in
       // front of it: shooting patches of two patch sizes left it 15% too dark.
-      {"short block front", {210, 80, 89.5}, 8},
+      {"short block front", {210, 80, 89.5}, 16},
   };
   const PathTracer tracer(scene);
   for (const Probe& probe : probes) {
