@@ -38,7 +38,8 @@ class LeafEmitter {
   void addInputVertices(uint32_t first, const std::vector<Vec2>& plane);
 
   const std::vector<Vec2>& vertices() const { return vertices_; }
-  std::vector<Vec2> takeVertices() { return std::move(vertices_); }
+  // Hands the vertices over and takes `other`'s memory for the next polygon's.
+  void swapVertices(std::vector<Vec2>& other) { vertices_.swap(other); }
 
  private:
   const LeafRegion& region(int32_t q);

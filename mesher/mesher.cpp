@@ -27,6 +27,12 @@ Mesher::Mesher() : state_(std::make_unique<State>()) {}
 Mesher::~Mesher() = default;
 
 Mesh Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings) {
+  Mesh mesh;
+  this->mesh(polygon, settings, mesh);
+  return mesh;
+}
+
+void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings, Mesh& out) {
   State& s = *state_;
   // Phases of chapter 5: tree setup, edge storage and balancing; then leaf by leaf meshing.
   buildPolygonTree(polygon, settings.patchSize, s.built);
@@ -35,11 +41,10 @@ Mesh Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
   s.built.tree.leaves(s.leaves);
   if (s.emitter) s.emitter->reset(polygon, s.leaves.size());
   else s.emitter.emplace(polygon, s.built, s.leaves.size());
-  Mesh mesh;
-  mesh.elements.reserve(s.leaves.size() * 2);
-  for (int32_t q : s.leaves) s.emitter->emit(q, mesh.elements);
-  mesh.vertices = s.emitter->takeVertices();
-  return mesh;
+  out.elements.clear();
+  out.elements.reserve(s.leaves.size() * 2);
+  for (int32_t q : s.leaves) s.emitter->emit(q, out.elements);
+  s.emitter->swapVertices(out.vertices);
 }
 
 }  // namespace mesher

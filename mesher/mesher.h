@@ -49,6 +49,9 @@ class Mesher {
   Mesher();
   ~Mesher();
   Mesh mesh(const PolygonWithHoles& polygon, const MeshSettings& settings);
+  // The same into `out`, reusing its memory: meshing polygon after polygon into one Mesh touches
+  // no fresh pages, which for a million elements cost a tenth of the time.
+  void mesh(const PolygonWithHoles& polygon, const MeshSettings& settings, Mesh& out);
 
  private:
   struct State;

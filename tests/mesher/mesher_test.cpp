@@ -110,10 +110,12 @@ TEST(MeshChecks, AspectRatioIsOneForEquilateralAndFallsForSlivers) {
   EXPECT_LT(checkMesh(sliver, thin).smallestAspectRatio, 0.05);
 }
 
-// A Mesher carries memory from polygon to polygon, nothing else: each mesh equals a fresh one.
+// A Mesher carries memory from polygon to polygon, nothing else: each mesh equals a fresh one,
+// also when it is written over the previous one.
 TEST(Mesher, ReusedForManyPolygonsGivesWhatFreshMeshingGives) {
   std::mt19937 random(5);
   Mesher mesher;
+  Mesh overwritten;
   for (int trial = 0; trial < 200; ++trial) {
     SCOPED_TRACE(trial);
     const PolygonWithHoles polygon = trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial);
@@ -121,6 +123,9 @@ TEST(Mesher, ReusedForManyPolygonsGivesWhatFreshMeshingGives) {
     const Mesh reused = mesher.mesh(polygon, {patch}), fresh = meshPolygon(polygon, {patch});
     EXPECT_EQ(reused.vertices, fresh.vertices);
     EXPECT_EQ(reused.elements, fresh.elements);
+    mesher.mesh(polygon, {patch}, overwritten);
+    EXPECT_EQ(overwritten.vertices, fresh.vertices);
+    EXPECT_EQ(overwritten.elements, fresh.elements);
   }
 }
 
