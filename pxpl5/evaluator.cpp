@@ -86,25 +86,33 @@ constexpr int kLanes = 8;
 template <int kEdges>
 [[gnu::always_inline]] inline void evaluateRowsFused(const SetupPrimitive& primitive, const Expression* edges, PixelRect area,
                                                      const PixelMemory& memory, EvaluatorStats& stats) {
+  constexpr int kTerms = kEdges + 1;  // the edges, then the depth
   const uint32_t value = primitive.value;
   const int width = (area.x1 - area.x0 + kLanes - 1) & ~(kLanes - 1);  // a multiple of kLanes: no remainder
   const int regionEnd = (area.x0 & ~(kRegionSize - 1)) + kRegionSize;
   const int lo = std::min(area.x0, regionEnd - width);
-  // What is the same on every row: each lane's x and whether it lies in the area.
-  alignas(64) float xs[kRegionSize];
+  const Expression* ex[kTerms];
+  for (int k = 0; k < kEdges; ++k) ex[k] = &edges[k];
+  ex[kEdges] = &primitive.depth;
+  // What is the same on every row. The expressions are linear, so d, e and f are zeros (of
+  // either sign) and e*y, d*(x*x), f*(y*y) are those same zeros for any row and column: the
+  // contract's (a + e*y)*x + d*(x*x) per lane is (a + e)*x + d, computed once.
+  alignas(64) float ax[kTerms][kRegionSize];
   alignas(64) uint32_t inArea[kRegionSize];
-  for (int i = 0; i < width; ++i) {
-    const int px = lo + i;
-    xs[i] = static_cast<float>(px);
-    inArea[i] = px >= area.x0 && px < area.x1 ? ~0u : 0u;
+  for (int k = 0; k < kTerms; ++k) {
+    const float a = ex[k]->a + ex[k]->e, d = ex[k]->d;
+    for (int i = 0; i < width; ++i) ax[k][i] = a * static_cast<float>(lo + i) + d;
   }
+  for (int i = 0; i < width; ++i) inArea[i] = lo + i >= area.x0 && lo + i < area.x1 ? ~0u : 0u;
+  float b[kTerms], c[kTerms], f[kTerms], t[kTerms];
+  for (int k = 0; k < kTerms; ++k) b[k] = ex[k]->b, c[k] = ex[k]->c, f[k] = ex[k]->f, t[k] = ex[k]->t;
   // Pixels written, counted per lane and added up once.
   alignas(32) uint32_t won[kLanes] = {};
   for (int y = area.y0; y < area.y1; ++y) {
+    // The row's part, (b*y + c) + f*(y*y), with f*(y*y) = f as above.
     const float fy = static_cast<float>(y);
-    RowTerms r[kEdges];
-    for (int k = 0; k < kEdges; ++k) r[k] = rowTerms(edges[k], fy);
-    const RowTerms d = rowTerms(primitive.depth, fy);
+    float rowC[kTerms];
+    for (int k = 0; k < kTerms; ++k) rowC[k] = (b[k] * fy + c[k]) + f[k];
     const size_t rowStart = static_cast<size_t>(y) * static_cast<size_t>(memory.stride) + static_cast<size_t>(lo);
     const float* __restrict term = memory.term + rowStart;
     float* __restrict depth = memory.depth + rowStart;
@@ -112,10 +120,9 @@ template <int kEdges>
     for (int run = 0; run < width; run += kLanes) {
       for (int l = 0; l < kLanes; ++l) {
         const int i = run + l;
-        const float x = xs[i], t = term[i];
         uint32_t on = inArea[i];
-        for (int k = 0; k < kEdges; ++k) on &= (r[k].a * x + r[k].c) + r[k].t * t >= 0 ? ~0u : 0u;
-        const float w = (d.a * x + d.c) + d.t * t;
+        for (int k = 0; k < kEdges; ++k) on &= (ax[k][i] + rowC[k]) + t[k] * term[i] >= 0 ? ~0u : 0u;
+        const float w = (ax[kEdges][i] + rowC[kEdges]) + t[kEdges] * term[i];
         const uint32_t wins = on & (w > depth[i] ? ~0u : 0u);
         depth[i] = std::bit_cast<float>((std::bit_cast<uint32_t>(w) & wins) | (std::bit_cast<uint32_t>(depth[i]) & ~wins));
         values[i] = (value & wins) | (values[i] & ~wins);
@@ -124,7 +131,7 @@ template <int kEdges>
     }
   }
   for (int l = 0; l < kLanes; ++l) stats.written += won[l];
-  stats.pixelOps += static_cast<uint64_t>(width) * static_cast<uint64_t>(area.y1 - area.y0) * (kEdges + 1);
+  stats.pixelOps += static_cast<uint64_t>(width) * static_cast<uint64_t>(area.y1 - area.y0) * kTerms;
 }
 
 }  // namespace
