@@ -103,6 +103,8 @@ struct Scene {
   Vec3 boundsMin{0}, boundsMax{0};  // of all surfaces
 
   const Camera* findCamera(const std::string& name) const;
+  // Sets boundsMin and boundsMax from the surfaces (after loading, and after a move).
+  void computeBounds();
 };
 
 }  // namespace engine

@@ -246,16 +246,6 @@ class SceneParser {
   Scene& scene_;
 };
 
-void computeBounds(Scene& scene) {
-  bool first = true;
-  for (const Surface& s : scene.surfaces)
-    for (const Vec3& p : s.outer) {
-      scene.boundsMin = first ? p : glm::min(scene.boundsMin, p);
-      scene.boundsMax = first ? p : glm::max(scene.boundsMax, p);
-      first = false;
-    }
-}
-
 // A patch size so small that one edge of the scene would need more than kMaxPatchesPerEdge
 // patches is a typo (a size in metres in a scene in millimetres), not a wish.
 void checkPatchSizes(const Scene& scene, const JsonReader& in) {
@@ -298,7 +288,7 @@ Scene parseScene(std::string_view text, const std::string& file) {
   for (uint32_t i = 0; i < scene.objects.size(); ++i)
     for (const Solid& solid : scene.objects[i].solids)
       appendSolidSurfaces(scene, i, solid, scene.objects[i].patchSize, scene.surfaces);
-  computeBounds(scene);
+  scene.computeBounds();
   const Vec3 size = scene.boundsMax - scene.boundsMin;
   const double extent = std::max({size.x, size.y, size.z});
   // Without settings.patch_size, an eighth of the scene's extent.
@@ -324,6 +314,16 @@ std::string readInputFile(const std::string& path) {
 
 Scene loadScene(const std::string& path) {
   return parseScene(readInputFile(path), path);
+}
+
+void Scene::computeBounds() {
+  bool first = true;
+  for (const Surface& s : surfaces)
+    for (const Vec3& p : s.outer) {
+      boundsMin = first ? p : glm::min(boundsMin, p);
+      boundsMax = first ? p : glm::max(boundsMax, p);
+      first = false;
+    }
 }
 
 const Camera* Scene::findCamera(const std::string& name) const {

@@ -1,0 +1,63 @@
+#include "engine/scene_editor.h"
+
+#include "engine/solid_surfaces.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace engine {
+
+ObjectPose poseOf(const Object& object) { return {object.position, object.rotateYDeg}; }
+
+SceneEditor::SceneEditor(Scene scene, MeshedScene meshed)
+    : scene_(std::move(scene)), meshed_(std::move(meshed)), surfacesOf_(scene_.objects.size()) {
+  if (meshed_.surfaces.size() != scene_.surfaces.size())
+    throw std::invalid_argument("a meshed scene of " + std::to_string(meshed_.surfaces.size()) + " surfaces for " +
+                                std::to_string(scene_.surfaces.size()));
+  for (uint32_t s = 0; s < scene_.surfaces.size(); ++s) surfacesOf_[scene_.surfaces[s].object].push_back(s);
+  homeSurfaces_ = scene_.surfaces;
+  for (const SurfaceMesh& m : meshed_.surfaces) homePositions_.push_back(m.positions);
+  for (const Object& o : scene_.objects) homePoses_.push_back(poseOf(o));
+}
+
+std::optional<uint32_t> SceneEditor::findObject(std::string_view name) const {
+  for (uint32_t i = 0; i < scene_.objects.size(); ++i)
+    if (scene_.objects[i].name == name) return i;
+  return std::nullopt;
+}
+
+bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
+  if (object >= scene_.objects.size()) throw std::invalid_argument("no object " + std::to_string(object));
+  Object& o = scene_.objects[object];
+  if (!o.movable) throw std::invalid_argument("object \"" + o.name + "\" is not movable");
+  if (poseOf(o) == pose) return false;
+  o.position = pose.position;
+  o.rotateYDeg = pose.rotateYDeg;
+
+  // From the loaded placement to the new one: world = now * home^-1 (a rotation about y and a
+  // translation, so the inverse is the transpose).
+  Object home = o;
+  home.position = homePoses_[object].position;
+  home.rotateYDeg = homePoses_[object].rotateYDeg;
+  const Placement from = placementOf(home), to = placementOf(o);
+  const glm::dmat3 turn = to.worldFromObject * glm::transpose(from.worldFromObject);
+  const bool atHome = pose == homePoses_[object];
+  auto place = [&](const Vec3& p) { return atHome ? p : turn * (p - from.translation) + to.translation; };
+  for (uint32_t s : surfacesOf_[object]) {
+    const Surface& before = homeSurfaces_[s];
+    Surface& surface = scene_.surfaces[s];
+    for (size_t i = 0; i < before.outer.size(); ++i) surface.outer[i] = place(before.outer[i]);
+    for (size_t h = 0; h < before.holes.size(); ++h)
+      for (size_t i = 0; i < before.holes[h].size(); ++i) surface.holes[h][i] = place(before.holes[h][i]);
+    surface.normal = atHome ? before.normal : glm::normalize(turn * before.normal);
+    std::vector<Vec3>& positions = meshed_.surfaces[s].positions;
+    for (size_t i = 0; i < positions.size(); ++i) positions[i] = place(homePositions_[s][i]);
+  }
+  scene_.computeBounds();
+  return true;
+}
+
+}  // namespace engine

@@ -1,0 +1,118 @@
+// Moving objects: the surfaces and meshes go with them, rigidly, and come back exactly.
+#include "engine/edit_history.h"
+#include "engine/meshed_scene.h"
+#include "engine/scene_editor.h"
+#include "tests/engine/test_scenes.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace engine {
+namespace {
+
+SceneEditor editorOf(const Json& json) {
+  Scene scene = test::parse(json);
+  MeshedScene meshed = meshScene(scene);
+  return SceneEditor(std::move(scene), std::move(meshed));
+}
+
+TEST(SceneEditor, TranslationMovesTheObjectsSurfacesAndMeshesOnly) {
+  SceneEditor editor = editorOf(test::baseScene());
+  const Scene before = editor.scene();
+  const MeshedScene meshedBefore = editor.meshed();
+  const uint32_t box = *editor.findObject("box");
+  const Vec3 offset{0.5, 0, 1.25};
+  EXPECT_TRUE(editor.setPose(box, {offset, 0}));
+  EXPECT_EQ(editor.scene().objects[box].position, offset);
+  for (uint32_t s = 0; s < before.surfaces.size(); ++s) {
+    const bool moved = before.surfaces[s].object == box;
+    for (size_t i = 0; i < before.surfaces[s].outer.size(); ++i)
+      EXPECT_EQ(editor.scene().surfaces[s].outer[i], before.surfaces[s].outer[i] + (moved ? offset : Vec3{0}));
+    EXPECT_EQ(editor.scene().surfaces[s].normal, before.surfaces[s].normal);
+    const auto& positions = editor.meshed().surfaces[s].positions;
+    for (size_t i = 0; i < positions.size(); ++i)
+      EXPECT_NEAR(glm::length(positions[i] - meshedBefore.surfaces[s].positions[i] - (moved ? offset : Vec3{0})), 0, 1e-12);
+    EXPECT_EQ(editor.meshed().surfaces[s].mesh.elements, meshedBefore.surfaces[s].mesh.elements);
+  }
+}
+
+// A quarter turn about +y takes +x to -z (the spec's rule) about the object's origin.
+TEST(SceneEditor, RotationTurnsAboutTheVerticalThroughTheObjectsOrigin) {
+  SceneEditor editor = editorOf(test::baseScene());
+  const uint32_t box = *editor.findObject("box");
+  const Surface east = test::surfaceOf(editor.scene(), "box", "side 1");  // the face at x = 2
+  ASSERT_NEAR(east.normal.x, 1, 1e-12);
+  editor.setPose(box, {Vec3{0}, 90});
+  const Surface& turned = test::surfaceOf(editor.scene(), "box", "side 1");
+  EXPECT_NEAR(glm::length(turned.normal - Vec3{0, 0, -1}), 0, 1e-12);
+  for (size_t i = 0; i < east.outer.size(); ++i) {
+    const Vec3 p = east.outer[i];
+    EXPECT_NEAR(glm::length(turned.outer[i] - Vec3{p.z, p.y, -p.x}), 0, 1e-12);
+  }
+  EXPECT_NEAR(glm::length(turned.outer[0] - turned.outer[1]), glm::length(east.outer[0] - east.outer[1]), 1e-12);
+}
+
+TEST(SceneEditor, ManyMovesAndBackRestoreTheLoadedGeometryExactly) {
+  SceneEditor editor = editorOf(test::baseScene());
+  const Scene loaded = editor.scene();
+  const MeshedScene meshedLoaded = editor.meshed();
+  const uint32_t box = *editor.findObject("box");
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> offset(-1, 1), angle(-180, 180);
+  for (int i = 0; i < 50; ++i) editor.setPose(box, {Vec3{offset(random), 0, offset(random)}, angle(random)});
+  editor.setPose(box, {Vec3{0}, 0});
+  for (size_t s = 0; s < loaded.surfaces.size(); ++s) {
+    EXPECT_EQ(editor.scene().surfaces[s].outer, loaded.surfaces[s].outer);
+    EXPECT_EQ(editor.scene().surfaces[s].normal, loaded.surfaces[s].normal);
+    EXPECT_EQ(editor.meshed().surfaces[s].positions, meshedLoaded.surfaces[s].positions);
+  }
+  EXPECT_EQ(editor.scene().boundsMin, loaded.boundsMin);
+  EXPECT_EQ(editor.scene().boundsMax, loaded.boundsMax);
+}
+
+TEST(SceneEditor, FixedObjectsAndUnknownOnesRefuseToMove) {
+  SceneEditor editor = editorOf(test::baseScene());
+  const uint32_t room = *editor.findObject("room");
+  EXPECT_THROW(editor.setPose(room, {Vec3{1, 0, 0}, 0}), std::invalid_argument);
+  EXPECT_THROW(editor.setPose(7, {Vec3{1, 0, 0}, 0}), std::invalid_argument);
+  EXPECT_FALSE(editor.findObject("nothing"));
+  EXPECT_FALSE(editor.setPose(*editor.findObject("box"), {Vec3{0}, 0}));  // where it stands
+}
+
+TEST(SceneEditor, BoundsFollowAnObjectLeavingTheRoom) {
+  SceneEditor editor = editorOf(test::baseScene());
+  editor.setPose(*editor.findObject("box"), {Vec3{10, 0, 0}, 0});
+  EXPECT_EQ(editor.scene().boundsMax.x, 12);
+}
+
+TEST(EditHistory, UndoRedoAndTheSavedState) {
+  EditHistory history;
+  EXPECT_FALSE(history.undo());
+  EXPECT_FALSE(history.unsaved());
+  const PoseEdit a{1, {Vec3{0}, 0}, {Vec3{1, 0, 0}, 0}}, b{1, a.after, {Vec3{2, 0, 0}, 30}};
+  history.record(a);
+  history.record(b);
+  history.record({1, b.after, b.after});  // no change: not recorded
+  EXPECT_TRUE(history.unsaved());
+  EXPECT_EQ(history.undo()->after, b.after);
+  history.markSaved();
+  EXPECT_FALSE(history.unsaved());
+  EXPECT_EQ(history.redo()->after, b.after);
+  EXPECT_TRUE(history.unsaved());
+  EXPECT_FALSE(history.redo());
+  EXPECT_EQ(history.undo()->before, a.after);
+  EXPECT_FALSE(history.unsaved());  // back where it was saved
+  EXPECT_EQ(history.undo()->before, a.before);
+  EXPECT_FALSE(history.undo());
+  // A new edit after undoing drops the redo list and, with it, the saved state.
+  history.record({2, {Vec3{0}, 0}, {Vec3{0, 1, 0}, 0}});
+  EXPECT_FALSE(history.canRedo());
+  EXPECT_TRUE(history.unsaved());
+  history.undo();
+  EXPECT_TRUE(history.unsaved());
+}
+
+}  // namespace
+}  // namespace engine
