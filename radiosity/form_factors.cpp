@@ -95,6 +95,56 @@ double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const P
   return std::abs(sum) / (2 * std::numbers::pi);
 }
 
+Quadrature gaussRule(const Polygon3& p) {
+  Quadrature rule;
+  if (p.n == 3) {
+    const double b[3][3] = {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
+    for (const auto& w : b) {
+      rule.point[rule.n] = w[0] * p.v[0] + w[1] * p.v[1] + w[2] * p.v[2];
+      rule.weight[rule.n++] = 1.0 / 3;
+    }
+    return rule;
+  }
+  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  const glm::dvec3 &a = p.v[0], &b = p.v[1], &c = p.v[2], &d = p.v[3];
+  double total = 0;
+  for (double u : g)
+    for (double v : g) {
+      rule.point[rule.n] = (1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d;
+      const glm::dvec3 du = (1 - v) * (b - a) + v * (c - d), dv = (1 - u) * (d - a) + u * (c - b);
+      total += rule.weight[rule.n++] = glm::length(glm::cross(du, dv));  // the map's area scale there
+    }
+  for (double& w : rule.weight) w /= total;
+  return rule;
+}
+
+Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal) {
+  Receiver r;
+  r.polygon = p;
+  r.centre = polygonCentroid(p);
+  r.radius = pieceRadius(p, r.centre);
+  r.normal = normal;
+  r.offset = glm::dot(r.normal, r.centre);
+  r.area = polygonArea(p);
+  r.rule = gaussRule(p);
+  return r;
+}
+
+double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
+  const glm::dvec3 toward = r.centre - point;
+  const double above = glm::dot(toward, normal);
+  if (above < r.radius || glm::dot(toward, toward) < kGaussReceiverRatio * kGaussReceiverRatio * r.radius * r.radius)
+    return pointToPolygon(point, normal, r.polygon);
+  // cos at the point x cos at the receiver / (pi d^2), each cosine a dot over d.
+  double sum = 0;
+  for (int k = 0; k < r.rule.n; ++k) {
+    const glm::dvec3 d = r.rule.point[k] - point;
+    const double d2 = glm::dot(d, d);
+    sum += r.rule.weight[k] * glm::dot(d, normal) * std::abs(glm::dot(d, r.normal)) / (d2 * d2);
+  }
+  return sum * r.area / std::numbers::pi;
+}
+
 void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
                    double farRatio, double ratio, int splits, double& front, double& back) {
   const glm::dvec3 centre = polygonCentroid(piece);
@@ -106,38 +156,17 @@ void areaToPolygon(const Polygon3& piece, const glm::dvec3& centre, double size,
   const double distance = glm::length(centre - r.centre) - r.radius;
   if (size * farRatio <= distance) {
     // Far for its size: its centre stands for it, as a whole shooter's does for far receivers.
-    const double f = weight * pointToPolygon(centre, normal, r.polygon);
+    const double f = weight * pointToReceiver(centre, normal, r);
     (glm::dot(r.normal, centre) > r.offset ? front : back) += f;
     return;
   }
   if (splits <= 0 || size * ratio <= distance) {
-    // A piece small for its distance: a rule exact for quadratics over it (2 x 2 Gauss points on
-    // a quad's bilinear map, the 3-point rule on a triangle), so the error falls as the fourth
-    // power of the piece's size where the midpoint rule's falls as the square.
-    glm::dvec3 points[4];
-    double weights[4];
-    int count = 0;
-    if (piece.n == 3) {
-      const double b[3][3] = {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
-      for (const auto& w : b) {
-        points[count] = w[0] * piece.v[0] + w[1] * piece.v[1] + w[2] * piece.v[2];
-        weights[count++] = 1;
-      }
-    } else {
-      const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
-      const glm::dvec3 &a = piece.v[0], &b = piece.v[1], &c = piece.v[2], &d = piece.v[3];
-      for (double u : g)
-        for (double v : g) {
-          points[count] = (1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d;
-          const glm::dvec3 du = (1 - v) * (b - a) + v * (c - d), dv = (1 - u) * (d - a) + u * (c - b);
-          weights[count++] = glm::length(glm::cross(du, dv));  // the map's area scale there
-        }
-    }
-    double total = 0;
-    for (int k = 0; k < count; ++k) total += weights[k];
-    for (int k = 0; k < count; ++k) {
-      const double f = weight * weights[k] / total * pointToPolygon(points[k], normal, r.polygon);
-      (glm::dot(r.normal, points[k]) > r.offset ? front : back) += f;
+    // A piece small for its distance: its Gauss rule, whose error falls as the fourth power of
+    // the piece's size where the midpoint rule's falls as the square.
+    const Quadrature rule = gaussRule(piece);
+    for (int k = 0; k < rule.n; ++k) {
+      const double f = weight * rule.weight[k] * pointToReceiver(rule.point[k], normal, r);
+      (glm::dot(r.normal, rule.point[k]) > r.offset ? front : back) += f;
     }
     return;
   }

@@ -25,15 +25,39 @@ glm::dvec3 polygonCentroid(const Polygon3& p);  // area-weighted
 // 0 when p lies on or below the horizon. Either winding.
 double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const Polygon3& p);
 
-// The receiver of an area-to-polygon integral: its polygon and bounding sphere, and its plane
-// (dot(normal, q) == offset), whose front alone reflects.
+// A rule exact for quadratics over a polygon: 2 x 2 Gauss points on a quad's bilinear map, the
+// 3-point rule on a triangle. Weights are shares of the area and sum to 1.
+struct Quadrature {
+  std::array<glm::dvec3, 4> point{};
+  std::array<double, 4> weight{};
+  int n = 0;
+};
+Quadrature gaussRule(const Polygon3& p);
+
+// A receiving element: its polygon and bounding sphere, its plane (dot(normal, q) == offset),
+// whose front alone reflects, and its area and Gauss rule. makeReceiver takes the front's unit
+// normal.
 struct Receiver {
   Polygon3 polygon;
   glm::dvec3 centre{0};
   double radius = 0;
   glm::dvec3 normal{0};
   double offset = 0;
+  double area = 0;
+  Quadrature rule;
 };
+Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal);
+
+// A point at least this many receiver radii from the receiver's centre, with the receiver wholly
+// above its horizon, takes the factor from the receiver's Gauss rule: Lambert's differential
+// formula at each Gauss point, error falling as the fourth power of radius over distance (under
+// 0.7% at 4 radii for any orientation, 0.06% on average), at an eighth of the contour
+// integral's cost.
+constexpr double kGaussReceiverRatio = 4;
+
+// The form factor from a differential area at `point` with unit `normal` to `r`, unoccluded:
+// by r's Gauss rule where kGaussReceiverRatio allows, else pointToPolygon.
+double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
 
 // Adds to front/back weight x the form factor from `piece` (a part of the shooter, whose
 // normal is `normal`) to `r`, averaged over the piece. A piece farther from r's bounding sphere

@@ -12,7 +12,8 @@
 //    the centre's frame.
 //  - Small receivers (factor under smallReceiverPixels pixels): a pixel is either wholly theirs
 //    or not, so their count is off by up to a pixel, which for a tiny element is all of it. Their
-//    factor is Lambert's formula from the centre times their visibility read from the item
+//    factor is the analytic one from the centre (form_factors.h: Lambert's formula, or the
+//    receiver's Gauss rule when it is far for its size) times their visibility read from the item
 //    buffer at a few points. This is what lets elements of very different areas sit side by
 //    side (the UNC program's failure, thesis chapter 6): a small element gets the light its
 //    solid angle says, not a random number of pixels.
@@ -78,8 +79,10 @@ struct Solver::State {
   };
   std::vector<SurfaceData> surfaces;
 
-  // Per element (global index = the pxpl5 polygon index and id).
-  std::vector<Polygon3> polygon;
+  // Per element (global index = the pxpl5 polygon index and id). The receivers hold centres, radii
+  // and areas too; the loops over every element read them from the arrays below, which are
+  // denser.
+  std::vector<Receiver> receiver;
   std::vector<glm::dvec3> centre, normal, radiance;
   std::vector<glm::dvec3> elementUnshot;  // per element; its patch's unshot is their area-weighted mean
   std::vector<double> radius, area, offset;
@@ -122,14 +125,18 @@ struct Solver::State {
       : settings(s), renderer(pxpl5::HemisphereSettings{s.resolution, pxpl5::Projection::kHemisphere, s.graphicsProcessors}) {}
 
   void build(std::span<const Surface> input);
-  double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
-                    const glm::dvec3& eyeNormal, uint32_t j, std::vector<glm::dvec3>& targets) const;
+  double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye, uint32_t j,
+                    double unoccluded, std::vector<glm::dvec3>& targets) const;
   // New factors for the near and small receivers among elements [begin, end) of shooter p's
   // frame (see shoot).
   void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
                       uint32_t end, ReceiverChunk& out);
   double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
-  void choosePoint(uint32_t p);
+  std::span<const uint32_t> elementsOf(uint32_t p) const {
+    return {patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]};
+  }
+  const pxpl5::HemisphereFrame& frameFrom(uint32_t p, const glm::dvec3& point);
+  const pxpl5::HemisphereFrame* choosePoint(uint32_t p);
   void shoot(uint32_t p);
 };
 
@@ -138,7 +145,7 @@ struct Solver::State {
 void Solver::State::build(std::span<const Surface> input) {
   size_t elementTotal = 0;
   for (const Surface& s : input) elementTotal += s.elements.size();
-  polygon.reserve(elementTotal);
+  receiver.reserve(elementTotal);
   soupVertices.reserve(elementTotal * 4);
   soupPolygons.reserve(elementTotal);
 
@@ -149,7 +156,7 @@ void Solver::State::build(std::span<const Surface> input) {
     if (!in.patchOfElement.empty() && in.patchOfElement.size() != in.elements.size())
       throw std::invalid_argument(where + ": patchOfElement has the wrong size");
     SurfaceData& s = surfaces.emplace_back();
-    s.firstElement = static_cast<uint32_t>(polygon.size());
+    s.firstElement = static_cast<uint32_t>(receiver.size());
     s.elementCount = static_cast<uint32_t>(in.elements.size());
     s.firstPatch = static_cast<uint32_t>(members.size());
     s.normal = glm::normalize(in.normal);
@@ -167,18 +174,14 @@ void Solver::State::build(std::span<const Surface> input) {
           throw std::invalid_argument(where + ", element " + std::to_string(e) + ": corner index out of range");
         p.v[k] = in.vertices[c[k]];
       }
-      const double a = polygonArea(p);
-      if (!(a > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
-      const glm::dvec3 m = polygonCentroid(p);
-      double r = 0;
-      for (int k = 0; k < p.n; ++k) r = std::max(r, glm::length(p.v[k] - m));
-      const uint32_t j = static_cast<uint32_t>(polygon.size());
-      polygon.push_back(p);
-      centre.push_back(m);
+      const Receiver& r = receiver.emplace_back(makeReceiver(p, s.normal));
+      if (!(r.area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
+      const uint32_t j = static_cast<uint32_t>(receiver.size() - 1);
+      centre.push_back(r.centre);
       normal.push_back(s.normal);
-      offset.push_back(glm::dot(s.normal, m));
-      radius.push_back(r);
-      area.push_back(a);
+      offset.push_back(r.offset);
+      radius.push_back(r.radius);
+      area.push_back(r.area);
       surfaceOf.push_back(static_cast<uint32_t>(si));
       radiance.push_back(s.emission);
       elementUnshot.push_back(s.emission);
@@ -208,7 +211,7 @@ void Solver::State::build(std::span<const Surface> input) {
     // A patch bent around a hole may have its centroid outside itself: shoot from its element
     // nearest the centroid instead.
     bool inside = false;
-    for (uint32_t e : members[p]) inside = inside || insideConvex(polygon[e], normal[e], c);
+    for (uint32_t e : members[p]) inside = inside || insideConvex(receiver[e].polygon, normal[e], c);
     if (!inside) {
       uint32_t nearest = members[p].front();
       for (uint32_t e : members[p])
@@ -217,7 +220,7 @@ void Solver::State::build(std::span<const Surface> input) {
     }
     double r = 0;
     for (uint32_t e : members[p])
-      for (int k = 0; k < polygon[e].n; ++k) r = std::max(r, glm::length(polygon[e].v[k] - c));
+      for (int k = 0; k < receiver[e].polygon.n; ++k) r = std::max(r, glm::length(receiver[e].polygon.v[k] - c));
     patchSurface.push_back(si);
     patchArea.push_back(a);
     patchCentre.push_back(c);
@@ -228,25 +231,25 @@ void Solver::State::build(std::span<const Surface> input) {
   }
 
   pointChosen.assign(patchTotal, 0);
-  pixelFactor.assign(polygon.size(), 0.0);
-  replaced.assign(polygon.size(), 0);
+  pixelFactor.assign(receiver.size(), 0.0);
+  replaced.assign(receiver.size(), 0);
 }
 
 // ---- receivers of one shot ---------------------------------------------------------------------
 
-// Visibility of element j from the frame's centre: the pixel count over Lambert's unoccluded
-// factor where j is big enough to own pixels, else the item buffer at its centroid and at points
-// a quarter of the way in from each corner.
+// Visibility of element j from the frame's centre, where j's unoccluded factor from there is
+// `unoccluded`: the pixel count over that where j is big enough to own pixels, else the item
+// buffer at its centroid and at points a quarter of the way in from each corner.
 double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
-                                 const glm::dvec3& eyeNormal, uint32_t j, std::vector<glm::dvec3>& targets) const {
-  const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
+                                 uint32_t j, double unoccluded, std::vector<glm::dvec3>& targets) const {
   if (unoccluded >= settings.smallReceiverPixels * pixelShare) {
     const double ratio = pixelFactor[j] / unoccluded;
     return ratio >= kUnoccludedRatio ? 1.0 : ratio;
   }
   targets.clear();
   targets.push_back(centre[j]);
-  for (int k = 0; k < polygon[j].n; ++k) targets.push_back(polygon[j].v[k] + 0.25 * (centre[j] - polygon[j].v[k]));
+  const Polygon3& corners = receiver[j].polygon;
+  for (int k = 0; k < corners.n; ++k) targets.push_back(corners.v[k] + 0.25 * (centre[j] - corners.v[k]));
   return itemBufferVisibility(frame, axes, eye, targets, j, {normal, offset, surfaceOf});
 }
 
@@ -263,17 +266,15 @@ double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::
 // shooting from inside would hand all of it to backs. The first time a patch shoots, a centre
 // that sees more than a quarter backs is replaced by the element centre, or the point a third
 // of the way in from an element corner, that sees the fewest; the geometry does not change, so
-// the choice is kept.
-void Solver::State::choosePoint(uint32_t p) {
+// the choice is kept. Returns the frame from the centre when it is kept (the shot's own frame),
+// else null.
+const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
   pointChosen[p] = 1;
-  const glm::dvec3 n = surfaces[patchSurface[p]].normal;
-  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
-  const auto backFrom = [&](const glm::dvec3& point) {
-    ++stats.frames;
-    return backShare(renderer.render({glm::vec3(point), glm::vec3(n), own}, {soupVertices, soupPolygons}), point);
-  };
-  double best = backFrom(patchCentre[p]);
-  if (best <= 0.25) return;
+  const std::span<const uint32_t> own = elementsOf(p);
+  const auto backFrom = [&](const glm::dvec3& point) { return backShare(frameFrom(p, point), point); };
+  const pxpl5::HemisphereFrame& centreFrame = frameFrom(p, patchCentre[p]);
+  double best = backShare(centreFrame, patchCentre[p]);
+  if (best <= 0.25) return &centreFrame;
   glm::dvec3 bestPoint = patchCentre[p];
   for (uint32_t e : own) {
     const auto consider = [&](const glm::dvec3& q) {
@@ -281,15 +282,24 @@ void Solver::State::choosePoint(uint32_t p) {
       if (b < best) best = b, bestPoint = q;
     };
     consider(centre[e]);
+    const Polygon3& corners = receiver[e].polygon;
     if (own.size() == 1)
-      for (int k = 0; k < polygon[e].n; ++k) consider(polygon[e].v[k] + (centre[e] - polygon[e].v[k]) / 3.0);
+      for (int k = 0; k < corners.n; ++k) consider(corners.v[k] + (centre[e] - corners.v[k]) / 3.0);
   }
   patchCentre[p] = bestPoint;
   double r = 0;
   for (uint32_t e : own)
-    for (int k = 0; k < polygon[e].n; ++k) r = std::max(r, glm::length(polygon[e].v[k] - bestPoint));
+    for (int k = 0; k < receiver[e].polygon.n; ++k) r = std::max(r, glm::length(receiver[e].polygon.v[k] - bestPoint));
   patchRadius[p] = r;
   ++stats.movedShooters;
+  return nullptr;
+}
+
+// Patch p's hemisphere frame from `point`: every element but the patch's own.
+const pxpl5::HemisphereFrame& Solver::State::frameFrom(uint32_t p, const glm::dvec3& point) {
+  ++stats.frames;
+  return renderer.render({glm::vec3(point), glm::vec3(surfaces[patchSurface[p]].normal), elementsOf(p)},
+                         {soupVertices, soupPolygons});
 }
 
 void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes,
@@ -300,7 +310,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
   glm::dvec3 replacedNew{0};
   uint64_t nearCount = 0, smallCount = 0;
   const uint32_t si = patchSurface[p];
-  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
+  const std::span<const uint32_t> own = elementsOf(p);
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
   const double nearLimit = settings.nearFieldRatio * patchRadius[p];
   const double smallLimit = settings.smallReceiverPixels * pixelShare;
@@ -312,13 +322,12 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
     NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
     if (gap < nearLimit) {
       // Visibility first: a receiver the shooter's centre cannot see needs no integral.
-      const double v = visibility(frame, axes, eye, eyeNormal, j, out.targets);
+      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]), out.targets);
       if (v > 0) {
-        const Receiver r{polygon[j], centre[j], radius[j], normal[j], offset[j]};
         for (size_t k = 0; k < own.size(); ++k) {
           double front = 0, back = 0;
-          areaToPolygon(polygon[own[k]], centre[own[k]], radius[own[k]], 1.0, eyeNormal, r, settings.nearFieldRatio,
-                        settings.pieceRatio, settings.maxShooterSplits, front, back);
+          areaToPolygon(receiver[own[k]].polygon, centre[own[k]], radius[own[k]], 1.0, eyeNormal, receiver[j],
+                        settings.nearFieldRatio, settings.pieceRatio, settings.maxShooterSplits, front, back);
           f.front += shares[k] * front;
           f.back += shares[k] * back;
         }
@@ -328,9 +337,9 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
     } else {
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
-      const double unoccluded = pointToPolygon(eye, eyeNormal, polygon[j]);
+      const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
-      const double v = unoccluded > 0 ? visibility(frame, axes, eye, eyeNormal, j, out.targets) : 0;
+      const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded, out.targets) : 0;
       (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
       ++smallCount;
     }
@@ -346,10 +355,10 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
 }
 
 void Solver::State::shoot(uint32_t p) {
-  if (!pointChosen[p]) choosePoint(p);
+  const pxpl5::HemisphereFrame* chosen = pointChosen[p] ? nullptr : choosePoint(p);
   const uint32_t si = patchSurface[p];
   const glm::dvec3 dB = unshot[p];
-  const std::span<const uint32_t> own(patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]);
+  const std::span<const uint32_t> own = elementsOf(p);
   // Each element's share of the patch's unshot power per channel: the near field sees the
   // patch's elements one by one, so a patch brighter at one end lights its near receivers so.
   shares.clear();
@@ -366,17 +375,14 @@ void Solver::State::shoot(uint32_t p) {
   const glm::dvec3 power = kPi * dB * patchArea[p];
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
 
-  // The frame: every element but the shooter's own.
-  const pxpl5::HemisphereFrame& frame =
-      renderer.render({glm::vec3(eye), glm::vec3(eyeNormal), own}, {soupVertices, soupPolygons});
-  ++stats.frames;
+  const pxpl5::HemisphereFrame& frame = chosen ? *chosen : frameFrom(p, eye);
   if (pixelShare == 0) pixelShare = frame.weights[static_cast<size_t>(frame.height / 2) * frame.stride + frame.width / 2];
   for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = f.factor;
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(eyeNormal));
 
   // Near and small receivers get new factors, per channel (near ones weigh the shooter's
   // elements by their unshot light), judged on the graphics processors.
-  const auto elements = static_cast<uint32_t>(polygon.size());
+  const auto elements = static_cast<uint32_t>(receiver.size());
   renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
     judgeReceivers(p, frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
                    static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunks[c]);
@@ -508,7 +514,7 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
   std::vector<double> weight(s.vertexCount, 0.0);
   for (uint32_t e = 0; e < s.elementCount; ++e) {
     const uint32_t j = s.firstElement + e;
-    for (int k = 0; k < st.polygon[j].n; ++k) {
+    for (int k = 0; k < st.receiver[j].polygon.n; ++k) {
       sum[s.corners[e][k]] += st.area[j] * st.radiance[j];
       weight[s.corners[e][k]] += st.area[j];
     }
@@ -522,7 +528,7 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
 const Stats& Solver::stats() const { return state_->stats; }
 std::span<const ShotRecord> Solver::shotHistory() const { return state_->history; }
 size_t Solver::surfaceCount() const { return state_->surfaces.size(); }
-size_t Solver::elementCount() const { return state_->polygon.size(); }
+size_t Solver::elementCount() const { return state_->receiver.size(); }
 size_t Solver::patchCount() const { return state_->unshot.size(); }
 
 }  // namespace radiosity
