@@ -37,6 +37,11 @@ struct Emitter::Batch {
   std::vector<uint32_t> binStart;  // regionCount + 1 offsets into binned
   std::vector<uint32_t> binned;    // primitive indices grouped by region
   std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (region, primitive) before grouping
+  // The ring's bookkeeping of this batch's instruction streams, set by countStreams()
+  // (machine.cpp) after grouping.
+  uint64_t instructions = 0, ringBytes = 0;
+  std::vector<uint64_t> regionWork;  // per region, bounding-box pixels of the streams sent to it
+  void countStreams();
 
   void clear() {
     primitives.clear();

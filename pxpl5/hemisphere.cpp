@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace pxpl5 {
 
@@ -75,15 +76,22 @@ void screenSize(Projection projection, int resolution, int& width, int& height) 
 
 // ---- HemisphereRenderer ------------------------------------------------------------------
 
+// A polygon's pixels are summed in integers: counted on the disk, whose pixels all weigh the
+// same, and in units of 2^-62 on the hemicube, where every float weight is a whole number of
+// them (down to 2^-39). The sums are then exact, so the order in which the renderers finish
+// their regions, and their number, cannot change a factor.
+constexpr double kWeightUnit = 0x1p-62;
+
 struct HemisphereRenderer::State {
   HemisphereSettings settings;
   Machine machine;
   std::vector<float> weights;
-  std::vector<double> sums;  // per polygon index; kept at zero between frames
-  double diskShare = 0;      // the weight of every disk pixel (hemisphere projection)
+  std::vector<std::vector<int64_t>> sums;  // per renderer, per polygon index; zero between frames
+  double diskShare = 0;                    // the weight of every disk pixel (hemisphere projection)
   HemisphereFrame frame;
 
-  State(const HemisphereSettings& s, const MachineSettings& m) : settings(s), machine(m) {}
+  State(const HemisphereSettings& s, const MachineSettings& m)
+      : settings(s), machine(m), sums(static_cast<size_t>(m.graphicsProcessors)) {}
 };
 
 namespace {
@@ -134,49 +142,53 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   validate(soup);
   if (!(glm::length(view.normal) > 0)) throw std::invalid_argument("pxpl5: the viewpoint's normal is zero");
 
-  // One machine frame.
+  // One machine frame. Each renderer sums the pixels of each polygon in the regions it
+  // finishes, a run of equal items at a time, while the others still render.
   ProjectionInput input{&soup, localFrame(view), view.skipIds, st.settings.resolution};
   const bool hemisphere = st.settings.projection == Projection::kHemisphere;
-  st.machine.renderFrame(soup.polygons.size(), [&](size_t begin, size_t end, Emitter& out) {
-    if (hemisphere)
-      setupHemisphere(input, begin, end, out);
-    else
-      setupHemicube(input, begin, end, out);
-  });
-
-  // Sum the weights of each polygon's pixels, a run of equal items at a time. The disk's
-  // weights are all equal, so there a run adds its length (exact) and the weight comes last.
-  HemisphereFrame& frame = st.frame;
-  frame.items = st.machine.valuePlane();
-  if (st.sums.size() < soup.polygons.size()) st.sums.resize(soup.polygons.size(), 0.0);
-  const size_t stride = static_cast<size_t>(frame.stride);
-  for (int y = 0; y < frame.height; ++y) {
-    const uint32_t* items = frame.items.data() + static_cast<size_t>(y) * stride;
-    const float* weights = st.weights.data() + static_cast<size_t>(y) * stride;
-    for (int x = 0; x < frame.width;) {
-      const uint32_t item = items[x];
-      int runEnd = x + 1;
-      while (runEnd < frame.width && items[runEnd] == item) ++runEnd;
-      if (item != kNoValue) {
-        if (hemisphere) {
-          st.sums[item] += runEnd - x;
-        } else {
-          double sum = 0;
-          for (int k = x; k < runEnd; ++k) sum += weights[k];
-          st.sums[item] += sum;
+  for (std::vector<int64_t>& sums : st.sums)
+    if (sums.size() < soup.polygons.size()) sums.resize(soup.polygons.size(), 0);
+  const std::span<const uint32_t> itemPlane = st.machine.valuePlane();
+  const size_t stride = static_cast<size_t>(st.machine.pixelStride());
+  const auto sumRegion = [&](PixelRect region, int renderer) {
+    int64_t* sums = st.sums[static_cast<size_t>(renderer)].data();
+    for (int y = region.y0; y < region.y1; ++y) {
+      const uint32_t* items = itemPlane.data() + static_cast<size_t>(y) * stride;
+      const float* weights = st.weights.data() + static_cast<size_t>(y) * stride;
+      for (int x = region.x0; x < region.x1;) {
+        const uint32_t item = items[x];
+        int runEnd = x + 1;
+        while (runEnd < region.x1 && items[runEnd] == item) ++runEnd;
+        if (item != kNoValue) {
+          if (hemisphere) {
+            sums[item] += runEnd - x;
+          } else {
+            for (int k = x; k < runEnd; ++k) sums[item] += static_cast<int64_t>(static_cast<double>(weights[k]) / kWeightUnit);
+          }
         }
+        x = runEnd;
       }
-      x = runEnd;
     }
-  }
+  };
+  st.machine.renderFrame(
+      soup.polygons.size(),
+      [&](size_t begin, size_t end, Emitter& out) {
+        if (hemisphere)
+          setupHemisphere(input, begin, end, out);
+        else
+          setupHemicube(input, begin, end, out);
+      },
+      256, sumRegion);
 
   // Per id, ascending; ids usually come ascending already, then no sort is needed.
+  HemisphereFrame& frame = st.frame;
+  frame.items = itemPlane;
   frame.factors.clear();
-  const double scale = hemisphere ? st.diskShare : 1.0;
+  const double scale = hemisphere ? st.diskShare : kWeightUnit;
   for (size_t i = 0; i < soup.polygons.size(); ++i) {
-    if (st.sums[i] == 0) continue;
-    frame.factors.push_back({soup.polygons[i].id, st.sums[i] * scale});
-    st.sums[i] = 0;
+    int64_t sum = 0;
+    for (std::vector<int64_t>& sums : st.sums) sum += std::exchange(sums[i], 0);
+    if (sum != 0) frame.factors.push_back({soup.polygons[i].id, static_cast<double>(sum) * scale});
   }
   const auto byId = [](const IdFactor& a, const IdFactor& b) { return a.id < b.id; };
   if (!std::is_sorted(frame.factors.begin(), frame.factors.end(), byId)) std::stable_sort(frame.factors.begin(), frame.factors.end(), byId);

@@ -1,6 +1,7 @@
 // The machine: pixel memory, the two phases of a frame, the ring's bookkeeping.
 //
-// Sections: Emitter (a graphics processor's output and binning) | Machine state | renderFrame.
+// Sections: Emitter (a graphics processor's output, binning and the ring's counts) | Machine
+// state | renderFrame.
 #include "pxpl5/batch.h"
 #include "pxpl5/evaluator.h"
 #include "pxpl5/worker_pool.h"
@@ -14,6 +15,17 @@
 namespace pxpl5 {
 
 // ---- Emitter ------------------------------------------------------------------------------
+
+namespace {
+
+// Bytes of one instruction stream in the emulator's encoding (README): a 16-byte header (bounds
+// as four 16-bit coordinates, value, edge count and flags) and each expression's non-zero
+// coefficient set (linear with term: 4 floats; quadratic: 7).
+uint64_t streamBytes(const SetupPrimitive& p) {
+  return 16 + (p.edgeCount + 1) * (p.quadratic ? 28u : 16u);
+}
+
+}  // namespace
 
 bool Emitter::convex(PixelRect bounds, std::span<const Expression> edges, const Expression& depth, uint32_t value) {
   if (edges.empty() || edges.size() > kMaxEdges) throw std::invalid_argument("pxpl5: a primitive needs 1 to 32 edges");
@@ -33,18 +45,23 @@ bool Emitter::convex(PixelRect bounds, std::span<const Expression> edges, const 
   return true;
 }
 
-// ---- Machine state -----------------------------------------------------------------------
-
-namespace {
-
-// Bytes of one instruction stream in the emulator's encoding (README): a 16-byte header (bounds
-// as four 16-bit coordinates, value, edge count and flags) and each expression's non-zero
-// coefficient set (linear with term: 4 floats; quadratic: 7).
-uint64_t streamBytes(const SetupPrimitive& p) {
-  return 16 + (p.edgeCount + 1) * (p.quadratic ? 28u : 16u);
+// Each (primitive, region) pair is one instruction stream.
+void Emitter::Batch::countStreams() {
+  const size_t regions = static_cast<size_t>(screen->regionCount());
+  instructions = ringBytes = 0;
+  regionWork.assign(regions, 0);
+  for (size_t r = 0; r < regions; ++r) {
+    for (uint32_t i = binStart[r]; i < binStart[r + 1]; ++i) {
+      const SetupPrimitive& p = primitives[binned[i]];
+      instructions += p.edgeCount + 2;  // enable bounds, edges, depth test and write
+      ringBytes += streamBytes(p);
+      regionWork[r] += static_cast<uint64_t>(p.bounds.x1 - p.bounds.x0) * static_cast<uint64_t>(p.bounds.y1 - p.bounds.y0);
+    }
+  }
 }
 
-}  // namespace
+// ---- Machine state -----------------------------------------------------------------------
+
 
 struct Machine::State {
   MachineSettings settings;
@@ -98,14 +115,14 @@ void Machine::runOnGraphicsProcessors(size_t taskCount, const std::function<void
 
 // ---- renderFrame ---------------------------------------------------------------------------
 
-void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize) {
+void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize, const RegionProgram& regionDone) {
   State& st = *state_;
   const Screen& screen = st.screen;
   FrameCounters& counters = st.counters;
   for (ProcessorLoad& load : counters.graphicsProcessors) load = {};
   for (ProcessorLoad& load : counters.renderers) load = {};
 
-  // Graphics processors: set up and bin each batch of the caller's primitives.
+  // Graphics processors: set up, bin and count each batch of the caller's primitives.
   batchSize = std::max<size_t>(batchSize, 1);
   const size_t batchCount = (primitiveCount + batchSize - 1) / batchSize;
   if (st.batches.size() < batchCount) st.batches.resize(batchCount);
@@ -118,12 +135,13 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
     const size_t begin = b * batchSize, end = std::min(begin + batchSize, primitiveCount);
     setup(begin, end, emitter);
     batch.groupByRegion();
+    batch.countStreams();
     ProcessorLoad& load = counters.graphicsProcessors[static_cast<size_t>(worker)];
     ++load.tasks;
     load.primitives += end - begin;
   });
 
-  // The ring: every (primitive, region) pair is one instruction stream to a renderer.
+  // The ring: the batches' instruction streams (one per (primitive, region) pair) added up.
   counters.primitivesIn = primitiveCount;
   counters.primitivesOut = counters.regionPrimitives = counters.instructions = counters.ringBytes = 0;
   const int regions = screen.regionCount();
@@ -132,16 +150,10 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
   for (size_t b = 0; b < batchCount; ++b) {
     const Emitter::Batch& batch = st.batches[b];
     counters.primitivesOut += batch.primitives.size();
-    for (int r = 0; r < regions; ++r) {
-      for (uint32_t i = batch.binStart[static_cast<size_t>(r)]; i < batch.binStart[static_cast<size_t>(r) + 1]; ++i) {
-        const SetupPrimitive& p = batch.primitives[batch.binned[i]];
-        counters.instructions += p.edgeCount + 2;  // enable bounds, edges, depth test and write
-        counters.ringBytes += streamBytes(p);
-        const PixelRect& bb = p.bounds;
-        regionWork[static_cast<size_t>(r)] += static_cast<uint64_t>(bb.x1 - bb.x0) * static_cast<uint64_t>(bb.y1 - bb.y0);
-      }
-      counters.regionPrimitives += batch.binStart[static_cast<size_t>(r) + 1] - batch.binStart[static_cast<size_t>(r)];
-    }
+    counters.regionPrimitives += batch.binned.size();
+    counters.instructions += batch.instructions;
+    counters.ringBytes += batch.ringBytes;
+    for (size_t r = 0; r < static_cast<size_t>(regions); ++r) regionWork[r] += batch.regionWork[r];
   }
   counters.ringMessages = counters.regionPrimitives;
   counters.machinePixelOps = counters.instructions * kRegionSize * kRegionSize;
@@ -183,6 +195,7 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
       }
     }
     load.pixelOps += s.pixelOps - opsBefore;
+    if (regionDone) regionDone({region.x0, region.y0, std::min(region.x1, screen.width), region.y1}, worker);
   });
   counters.emulatedPixelOps = counters.pixelsWritten = 0;
   for (const EvaluatorStats& s : stats) {

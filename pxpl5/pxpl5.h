@@ -98,6 +98,12 @@ class Emitter {
 // in order. It must be safe to call concurrently for disjoint ranges.
 using SetupProgram = std::function<void(size_t begin, size_t end, Emitter& out)>;
 
+// Called on a renderer as soon as a region's pixels are final, as the real renderers then sent
+// them over the ring: the region (clipped to the screen) and the renderer's index in
+// [0, graphicsProcessors). It may read the depth and value planes within the region only, and
+// must be safe to call concurrently for different regions.
+using RegionProgram = std::function<void(PixelRect region, int renderer)>;
+
 class Machine {
  public:
   // Allocates the pixel memory and starts graphicsProcessors - 1 worker threads (the caller's
@@ -119,10 +125,11 @@ class Machine {
 
   // Runs one frame: clears depth and values, runs `setup` over [0, primitiveCount) on the
   // graphics processors (batches of `batchSize` primitives, any number per thread), bins, sends
-  // and renders. Output depends only on the inputs, never on the number of threads. An exception
-  // from the setup program (or the emitter) reaches the caller; that frame's planes and
+  // and renders, and calls `regionDone` (if given) for every region once it is rendered. Output
+  // depends only on the inputs, never on the number of threads. An exception from the setup
+  // program (or the emitter, or regionDone) reaches the caller; that frame's planes and
   // counters are then unspecified, and the machine stays usable.
-  void renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize = 256);
+  void renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize = 256, const RegionProgram& regionDone = {});
 
   // Runs a host program on the graphics processors between frames, as the real machine's i860s
   // ran general code: job(task, processor) for every task in [0, taskCount), taken in order by

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <limits>
+#include <mutex>
 #include <random>
 
 namespace pxpl5 {
@@ -49,6 +51,31 @@ TEST(Pxpl5Machine, RectangleCoversItsPixelsAcrossRegions) {
   EXPECT_EQ(c.machinePixelOps, 36u * 128 * 128);
   EXPECT_EQ(c.emulatedPixelOps, 304u * 200 * 5);  // in runs of eight: 300 pixels take 38
   EXPECT_EQ(c.pixelsWritten, 160u * 90u);
+}
+
+TEST(Pxpl5Machine, RegionProgramSeesEveryFinishedRegionOnce) {
+  Machine machine({300, 200, 2, Evaluator::kVector});
+  std::mutex mutex;
+  std::vector<PixelRect> regions;
+  size_t covered = 0;
+  machine.renderFrame(
+      1, [](size_t, size_t, Emitter& out) { out.convex({0, 0, 300, 200}, rectangleEdges(100, 50, 260, 140), constantDepth(1), 7); }, 256,
+      [&](PixelRect region, int renderer) {
+        size_t n = 0;
+        for (int y = region.y0; y < region.y1; ++y)
+          for (int x = region.x0; x < region.x1; ++x) n += machine.valuePlane()[static_cast<size_t>(y * 384 + x)] == 7;
+        std::lock_guard lock(mutex);
+        EXPECT_GE(renderer, 0);
+        EXPECT_LT(renderer, 2);
+        regions.push_back(region);
+        covered += n;
+      });
+  ASSERT_EQ(regions.size(), 6u);
+  std::sort(regions.begin(), regions.end(), [](const PixelRect& a, const PixelRect& b) { return std::pair(a.y0, a.x0) < std::pair(b.y0, b.x0); });
+  EXPECT_EQ(regions[2].x0, 256);
+  EXPECT_EQ(regions[2].x1, 300);  // clipped to the screen
+  EXPECT_EQ(regions[5].y1, 200);
+  EXPECT_EQ(covered, 160u * 90u);  // each region's pixels were final when it was handed over
 }
 
 TEST(Pxpl5Machine, QuadraticExpressionDrawsADisk) {
