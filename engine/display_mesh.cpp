@@ -24,6 +24,7 @@ DisplayMesh displayMesh(const MeshedScene& meshed) {
     const mesher::Mesh& patches = surfaceMesh.mesh;
     const auto first = static_cast<uint32_t>(mesh.positions.size());
     mesh.surfaceVertexStart.push_back(first);
+    mesh.surfaceEdgeStart.push_back(static_cast<uint32_t>(mesh.edges.size()));
     for (const Vec3& p : surfaceMesh.positions) {
       mesh.positions.emplace_back(p);
       mesh.radiance.emplace_back(0.0f);
@@ -52,7 +53,15 @@ DisplayMesh displayMesh(const MeshedScene& meshed) {
     }
   }
   mesh.surfaceVertexStart.push_back(static_cast<uint32_t>(mesh.positions.size()));
+  mesh.surfaceEdgeStart.push_back(static_cast<uint32_t>(mesh.edges.size()));
   return mesh;
+}
+
+void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh) {
+  for (uint32_t s : surfaces) {
+    const std::vector<Vec3>& positions = meshed.surfaces[s].positions;
+    std::copy(positions.begin(), positions.end(), mesh.positions.begin() + mesh.surfaceVertexStart[s]);
+  }
 }
 
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {

@@ -24,6 +24,8 @@ struct DisplayMesh {
   // Surface i owns vertices [surfaceVertexStart[i], surfaceVertexStart[i + 1]); each block starts
   // with the surface's own points (outer ring, then holes) at their exact coordinates.
   std::vector<uint32_t> surfaceVertexStart;
+  // Surface i's element edges are the index pairs in edges[surfaceEdgeStart[i], surfaceEdgeStart[i + 1]).
+  std::vector<uint32_t> surfaceEdgeStart;
 
   size_t triangleCount() const { return triangles.size() / 3; }
 };
@@ -31,6 +33,9 @@ struct DisplayMesh {
 // The display's geometry of meshed surfaces (radiance left 0): quads split into two triangles,
 // each element edge once.
 DisplayMesh displayMesh(const MeshedScene& meshed);
+
+// Copies the world positions of `surfaces` from `meshed` (after they moved; same meshes).
+void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh);
 
 // Shades every surface with its emission plus its reflectance times the scene's ambient
 // radiance (the picture before any light is shot); returns that ambient radiance.

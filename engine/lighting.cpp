@@ -36,7 +36,9 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
   for (;;) {
     {
       std::unique_lock lock(mutex_);
-      const auto ready = [&] { return stop_ || restart_ || (!paused_ && !done && !failed); };
+      const auto ready = [&] {
+        return stop_ || restart_ || editsApplied_ < editsRequested_ || (!paused_ && !done && !failed);
+      };
       if (!ready() && unpublished) {
         // About to wait (paused): the shots since the last snapshot are shown first.
         lock.unlock();
@@ -46,8 +48,13 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
       }
       wake_.wait(lock, ready);
       if (stop_) return;
-      if (restart_) {
+      if (restart_ || editsApplied_ < editsRequested_) {
         restart_ = false;
+        if (editsApplied_ < editsRequested_) {
+          surfaces_ = std::move(edited_);
+          edited_.clear();
+          editsApplied_ = editsRequested_;
+        }
         lock.unlock();
         try {
           solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
@@ -127,6 +134,15 @@ void LightingThread::restart() {
   wake_.notify_all();
 }
 
+void LightingThread::edit(std::vector<radiosity::Surface> surfaces) {
+  {
+    std::lock_guard lock(mutex_);
+    edited_ = std::move(surfaces);
+    ++editsRequested_;
+  }
+  wake_.notify_all();
+}
+
 void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
   // Built outside the lock: the UI only ever waits for a pointer swap.
   auto snapshot = std::make_shared<LightingSnapshot>();
@@ -140,6 +156,7 @@ void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
   snapshot->patches = solver.patchCount();
   snapshot->converged = converged;
   std::lock_guard lock(mutex_);
+  snapshot->edits = editsApplied_;
   snapshot->paused = paused_;
   snapshot->version = ++version_;
   latest_ = std::move(snapshot);

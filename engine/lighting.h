@@ -43,6 +43,7 @@ struct LightingSnapshot {
   double shotsPerSecond = 0;
   size_t elements = 0, patches = 0;
   bool converged = false, paused = false;
+  uint64_t edits = 0;                  // scene edits the radiance takes into account
   // Set when a shot or a restart failed (out of memory, no threads): shooting has stopped and
   // only a restart tries again. The radiance is the last good one.
   std::string error;
@@ -63,17 +64,22 @@ class LightingThread {
   // restarting throws the solution away and starts again from the emitters.
   void setPaused(bool paused);
   void restart();
+  // The scene changed (an object moved): `surfaces` replace the old ones, in the same order with
+  // the same meshes. Applied after the shot in flight; the snapshots count the edits applied.
+  void edit(std::vector<radiosity::Surface> surfaces);
 
  private:
   void run(std::unique_ptr<radiosity::Solver> solver);
   void publish(const radiosity::Solver& solver, bool converged);
   void publishError(const std::string& what);
 
-  const std::vector<radiosity::Surface> surfaces_;
+  std::vector<radiosity::Surface> surfaces_;  // the thread's own once it runs
   const LightingSettings settings_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   bool stop_ = false, paused_ = false, restart_ = false;
+  std::vector<radiosity::Surface> edited_;  // the surfaces of the newest edit not yet applied
+  uint64_t editsRequested_ = 0, editsApplied_ = 0;
   std::shared_ptr<const LightingSnapshot> latest_;
   uint64_t version_ = 0;
   std::thread thread_;  // last: starts once everything above exists

@@ -15,8 +15,11 @@ std::string sceneTextWithPoses(std::string_view text, const Scene& scene) {
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& o = scene.objects[i];
     nlohmann::ordered_json& out = objects[i];
-    if (o.position != Vec3{0} || out.contains("position")) out["position"] = {o.position.x, o.position.y, o.position.z};
-    if (o.rotateYDeg != 0 || out.contains("rotate_y")) out["rotate_y"] = o.rotateYDeg;
+    // Poses the file already states are left in its own spelling (0, not 0.0).
+    const nlohmann::ordered_json position = {o.position.x, o.position.y, o.position.z};
+    const nlohmann::ordered_json filePosition = out.value("position", nlohmann::ordered_json::array({0, 0, 0}));
+    if (filePosition != position) out["position"] = position;
+    if (out.value("rotate_y", 0.0) != o.rotateYDeg) out["rotate_y"] = o.rotateYDeg;
   }
   return root.dump(2) + "\n";
 }

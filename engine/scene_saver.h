@@ -10,8 +10,8 @@
 namespace engine {
 
 // `text` must be the walkrad-scene/1 text `scene` was parsed from. Everything but the poses is
-// kept as it was, in order (formatting is the writer's: two-space indents). A pose equal to the
-// spec's default is written only where the file already gave one.
+// kept as it was, in order (formatting is the writer's: two-space indents); a pose is written only
+// where it differs from the file's (or the spec's default where the file gives none).
 std::string sceneTextWithPoses(std::string_view text, const Scene& scene);
 
 }  // namespace engine

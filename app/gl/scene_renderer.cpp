@@ -60,13 +60,17 @@ void SceneRenderer::upload(const engine::DisplayMesh& mesh) {
   vertices_ = mesh.positions.size();
 }
 
-void SceneRenderer::updateRadiance(const std::vector<glm::vec3>& radiance) {
-  if (radiance.size() != vertices_) throw std::invalid_argument("radiance for " + std::to_string(radiance.size()) +
-                                                                " vertices, the mesh has " + std::to_string(vertices_));
-  glBindBuffer(GL_ARRAY_BUFFER, radiance_);
-  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(radiance.size() * sizeof(glm::vec3)), radiance.data());
+void SceneRenderer::replaceVertexData(GLuint buffer, const std::vector<glm::vec3>& values) const {
+  if (values.size() != vertices_) throw std::invalid_argument("vertex data for " + std::to_string(values.size()) +
+                                                              " vertices, the mesh has " + std::to_string(vertices_));
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(values.size() * sizeof(glm::vec3)), values.data());
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
+
+void SceneRenderer::updateRadiance(const std::vector<glm::vec3>& radiance) { replaceVertexData(radiance_, radiance); }
+
+void SceneRenderer::updatePositions(const std::vector<glm::vec3>& positions) { replaceVertexData(positions_, positions); }
 
 void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput) const {
   glViewport(0, 0, frame.width, frame.height);
@@ -95,13 +99,19 @@ void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput)
 
 void SceneRenderer::draw(const FrameSettings& frame) const {
   drawTriangles(frame, false);
-  if (frame.wireframe && edgeIndices_ > 0) {
+  if ((frame.wireframe || !frame.highlight.empty()) && edgeIndices_ > 0) {
     glUseProgram(wire_.id());
     glUniformMatrix4fv(wire_.uniform("u_clipFromWorld"), 1, GL_FALSE, glm::value_ptr(frame.clipFromWorld));
-    glUniform4f(wire_.uniform("u_color"), 1, 1, 1, 1);
     glDepthFunc(GL_LEQUAL);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edges_);
-    glDrawElements(GL_LINES, edgeIndices_, GL_UNSIGNED_INT, nullptr);
+    if (frame.wireframe) {
+      glUniform4f(wire_.uniform("u_color"), 1, 1, 1, 1);
+      glDrawElements(GL_LINES, edgeIndices_, GL_UNSIGNED_INT, nullptr);
+    }
+    glUniform4f(wire_.uniform("u_color"), 1, 0.8f, 0.1f, 1);
+    for (const auto& [first, end] : frame.highlight)
+      glDrawElements(GL_LINES, static_cast<GLsizei>(end - first), GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(static_cast<uintptr_t>(first) * sizeof(uint32_t)));
   }
   glBindVertexArray(0);
   glUseProgram(0);

@@ -9,6 +9,9 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <utility>
+#include <vector>
+
 namespace app {
 
 struct FrameSettings {
@@ -16,6 +19,9 @@ struct FrameSettings {
   int width = 640, height = 480;
   float exposure = 1;
   bool wireframe = false;
+  // Index ranges [first, end) of the mesh's edge list drawn in the highlight colour whether or
+  // not the wireframe is on: the selected object.
+  std::vector<std::pair<uint32_t, uint32_t>> highlight;
 };
 
 class SceneRenderer {
@@ -29,6 +35,8 @@ class SceneRenderer {
   void upload(const engine::DisplayMesh& mesh);
   // Replaces the vertex radiance only (a new lighting snapshot); one value per uploaded vertex.
   void updateRadiance(const std::vector<glm::vec3>& radiance);
+  // Replaces the vertex positions only (an object moved; same mesh).
+  void updatePositions(const std::vector<glm::vec3>& positions);
 
   // Draws into the bound framebuffer: tone-mapped sRGB colour, the wireframe when asked.
   void draw(const FrameSettings& frame) const;
@@ -39,6 +47,7 @@ class SceneRenderer {
 
  private:
   void drawTriangles(const FrameSettings& frame, bool linearOutput) const;
+  void replaceVertexData(GLuint buffer, const std::vector<glm::vec3>& values) const;
 
   GlProgram shading_{"gouraud.vert", "gouraud.frag"};
   GlProgram wire_{"wire.vert", "wire.frag"};

@@ -59,4 +59,11 @@ glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, const engine::S
   return glm::mat4(clipFromView * viewFromWorld);
 }
 
+glm::dvec3 rayThrough(const ViewCamera& camera, double aspect, glm::dvec2 ndc) {
+  const glm::dvec3 forward = camera.forward(), right = camera.right();
+  const glm::dvec3 up = glm::cross(right, forward);  // the image's vertical (glm::lookAt's)
+  const double halfHeight = std::tan(glm::radians(camera.fovYDeg) / 2);
+  return glm::normalize(forward + ndc.x * halfHeight * aspect * right + ndc.y * halfHeight * up);
+}
+
 }  // namespace app

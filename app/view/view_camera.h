@@ -5,6 +5,7 @@
 #include "engine/scene.h"
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace app {
@@ -34,5 +35,9 @@ bool chooseCamera(const engine::Scene& scene, const std::string& name, ViewCamer
 // clip-from-world for an image of `aspect` = width / height, with near and far planes that
 // enclose the scene's bounds.
 glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, const engine::Scene& scene);
+
+// The direction from the eye through the point `ndc` of the image (x right, y up, both -1..1)
+// of an image of `aspect` = width / height: where a click points.
+glm::dvec3 rayThrough(const ViewCamera& camera, double aspect, glm::dvec2 ndc);
 
 }  // namespace app

@@ -43,6 +43,29 @@ void lightingSection(const engine::LightingSnapshot& lighting, PanelState& state
   if (ImGui::Button("restart")) state.restartRequested = true;
 }
 
+void editSection(const engine::Scene& scene, PanelState& state) {
+  if (!ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (state.selected.empty()) {
+    ImGui::TextDisabled("click an object to select it");
+  } else {
+    ImGui::Text("selected: %s%s", state.selected.c_str(), state.selectedMovable ? "" : " (fixed)");
+    ImGui::Text("at (%.3g, %.3g, %.3g) %s, turned %.3g deg", state.selectedPosition.x, state.selectedPosition.y,
+                state.selectedPosition.z, scene.units.c_str(), state.selectedTurn);
+  }
+  ImGui::TextDisabled("left drag: move on its resting plane; wheel while dragging: height");
+  ImGui::TextDisabled("R / Shift+R: turn 15 deg; Esc: deselect");
+  ImGui::BeginDisabled(!state.canUndo);
+  if (ImGui::Button("undo (Ctrl+Z)")) state.undoRequested = true;
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!state.canRedo);
+  if (ImGui::Button("redo (Ctrl+Y)")) state.redoRequested = true;
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button(state.unsaved ? "save* (Ctrl+S)" : "save (Ctrl+S)")) state.saveRequested = true;
+  if (!state.saveReport.empty()) ImGui::TextDisabled("%s", state.saveReport.c_str());
+}
+
 }  // namespace
 
 void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh, const engine::LightingSnapshot& lighting,
@@ -60,6 +83,7 @@ void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh,
   ImGui::Text("%zu elements (%zu quads), %zu vertices", mesh.elements, mesh.quads, mesh.positions.size());
   ImGui::Separator();
   lightingSection(lighting, state);
+  editSection(scene, state);
   ImGui::Separator();
   ImGui::SliderFloat("exposure", &state.exposure, 1e-3f, 1e3f, "%.3g", ImGuiSliderFlags_Logarithmic);
   ImGui::SameLine();

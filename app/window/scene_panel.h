@@ -6,6 +6,8 @@
 #include "engine/lighting.h"
 #include "engine/scene.h"
 
+#include <glm/vec3.hpp>
+
 #include <string>
 
 namespace app {
@@ -20,6 +22,14 @@ struct PanelState {
   bool paused = false;          // the solver's pause toggle
   bool restartRequested = false;
   bool autoExposureRequested = false;
+  // Editing: what the window shows of the selection and history, and what the panel asks for.
+  std::string selected;            // the selected object's name; empty when none
+  bool selectedMovable = false;
+  glm::dvec3 selectedPosition{0};
+  double selectedTurn = 0;         // rotate_y, degrees
+  bool canUndo = false, canRedo = false, unsaved = false;
+  std::string saveReport;          // the last save's one-line report
+  bool undoRequested = false, redoRequested = false, saveRequested = false;
 };
 
 // Draws the panel for one frame; inputs that change the view or the solver are written into

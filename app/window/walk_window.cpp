@@ -10,6 +10,7 @@
 #include "app/gl/scene_renderer.h"
 #include "app/image/image.h"
 #include "app/view/view_camera.h"
+#include "app/window/scene_edits.h"
 #include "app/window/scene_panel.h"
 #include "app/window/walk_controls.h"
 #include "engine/display_mesh.h"
@@ -89,11 +90,45 @@ std::string screenshotName(const engine::Scene& scene) {
   return "walkrad-" + std::filesystem::path(scene.file).stem().string() + "-" + stamp + ".png";
 }
 
-WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking) {
+bool controlHeld(GLFWwindow* window) {
+  return glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+}
+
+// Key presses since the last frame, with their modifiers, for shortcuts (Ctrl+Z and the like):
+// a callback sees every press, however short, and the modifiers held with it. GLFW reports them
+// through a callback that Dear ImGui chains to.
+struct KeyPress {
+  int key, mods;
+};
+std::vector<KeyPress> g_presses;
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
+  if (action == GLFW_PRESS) g_presses.push_back({key, mods});
+}
+
+// Whether `key` was pressed with exactly the modifiers `mods` (of Shift and Ctrl) since the last
+// frame, and not into the panel.
+bool pressed(int key, int mods = 0) {
+  if (ImGui::GetIO().WantCaptureKeyboard) return false;
+  for (const KeyPress& p : g_presses)
+    if (p.key == key && (p.mods & (GLFW_MOD_SHIFT | GLFW_MOD_CONTROL)) == mods) return true;
+  return false;
+}
+
+// The ray under the cursor, for picking and dragging.
+Ray cursorRay(GLFWwindow* window, const ViewCamera& camera) {
+  int width = 0, height = 0;
+  glfwGetWindowSize(window, &width, &height);
+  glm::dvec2 mouse;
+  glfwGetCursorPos(window, &mouse.x, &mouse.y);
+  const glm::dvec2 ndc{2 * mouse.x / std::max(width, 1) - 1, 1 - 2 * mouse.y / std::max(height, 1)};
+  return {camera.position, rayThrough(camera, static_cast<double>(width) / std::max(height, 1), ndc)};
+}
+
+WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking, bool wheelTaken) {
   WalkInput input;
   const ImGuiIO& io = ImGui::GetIO();
   auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-  if (!io.WantCaptureKeyboard) {
+  if (!io.WantCaptureKeyboard && !controlHeld(window)) {
     input.forward = down(GLFW_KEY_W);
     input.back = down(GLFW_KEY_S);
     input.left = down(GLFW_KEY_A);
@@ -112,22 +147,23 @@ WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking
     input.lookDy = mouse.y - lastMouse.y;
   }
   lastMouse = mouse;
-  if (!io.WantCaptureMouse) input.scroll = g_scroll;
-  g_scroll = 0;
+  if (!io.WantCaptureMouse && !wheelTaken) input.scroll = g_scroll;
   return input;
 }
 
 }  // namespace
 
 int runView(const ViewOptions& options) {
-  const engine::Scene scene = engine::loadScene(options.scene);
+  std::string text = engine::readInputFile(options.scene);
+  engine::Scene loaded = engine::parseScene(text, options.scene);
   ViewCamera camera;
-  if (!chooseCamera(scene, options.camera, camera)) {
+  if (!chooseCamera(loaded, options.camera, camera)) {
     std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
     return 2;
   }
-  const engine::MeshedScene meshed = engine::meshScene(scene);
-  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  SceneEdits edits(options.scene, std::move(text), std::move(loaded));
+  const engine::Scene& scene = edits.editor().scene();  // follows the edits
+  engine::DisplayMesh mesh = engine::displayMesh(edits.editor().meshed());
   engine::shadeWithAmbient(scene, mesh);
 
   const GlfwSession glfw;
@@ -153,6 +189,7 @@ int runView(const ViewOptions& options) {
     return 1;
   }
   glfwSetScrollCallback(window, onScroll);  // before ImGui installs and chains its callbacks
+  glfwSetKeyCallback(window, onKey);
   // A key pressed and released between two frames still reads as pressed once (F12, taps).
   glfwSetInputMode(window, GLFW_STICKY_KEYS, GLFW_TRUE);
 
@@ -164,24 +201,70 @@ int runView(const ViewOptions& options) {
     PanelState panel;
     panel.exposure = static_cast<float>(engine::autoExposure(mesh));
     // The solver shoots on its own thread; each frame shows its newest snapshot.
-    engine::LightingThread lighting(engine::radiosityInput(scene, meshed), options.lighting);
+    engine::LightingThread lighting(engine::radiosityInput(scene, edits.editor().meshed()), options.lighting);
     std::shared_ptr<const engine::LightingSnapshot> shown;
     ProgressLine progress(scene.file);
     panel.wireframe = options.wireframe;
     WalkSettings walk;
     walk.speed = defaultWalkSpeed(scene);
 
+    // An object moved: the display follows at once, the light after the edit is recorded.
+    auto showMoved = [&](uint32_t object) {
+      engine::updatePositions(edits.editor().meshed(), edits.editor().surfacesOf(object), mesh);
+      renderer.updatePositions(mesh.positions);
+    };
+    auto relight = [&] { lighting.edit(engine::radiosityInput(scene, edits.editor().meshed())); };
+    auto recordEdit = [&](const std::optional<engine::PoseEdit>& edit) {
+      if (!edit) return;
+      edits.record(*edit);
+      relight();
+    };
+    auto afterHistoryStep = [&](std::optional<uint32_t> moved) {
+      if (!moved) return;
+      showMoved(*moved);
+      relight();
+    };
+
     glm::dvec2 lastMouse{0};
-    bool looking = false, f12WasDown = false;
+    bool looking = false, leftWasDown = false;
     double lastTime = glfwGetTime();
     for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
+      g_presses.clear();
       glfwPollEvents();
       const double now = glfwGetTime();
-      applyWalk(readWalkInput(window, lastMouse, looking), now - lastTime, walk, camera);
+      ObjectDrag& drag = edits.drag();
+      applyWalk(readWalkInput(window, lastMouse, looking, drag.dragging()), now - lastTime, walk, camera);
       lastTime = now;
-      const bool f12Down = glfwGetKey(window, GLFW_KEY_F12) == GLFW_PRESS;
-      if (f12Down && !f12WasDown) panel.screenshotRequested = true;
-      f12WasDown = f12Down;
+      if (pressed(GLFW_KEY_F12)) panel.screenshotRequested = true;
+
+      // Picking and dragging with the left button, off the panel.
+      const bool leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+      if (leftDown && !leftWasDown && !ImGui::GetIO().WantCaptureMouse) drag.press(cursorRay(window, camera));
+      if (leftDown && drag.dragging()) {
+        bool moved = drag.follow(cursorRay(window, camera));
+        // A wheel notch lifts by 5 cm.
+        if (g_scroll != 0) moved = drag.lift(g_scroll * 0.05 / scene.metersPerUnit) || moved;
+        if (moved) showMoved(*drag.selected());
+      }
+      g_scroll = 0;
+      if (!leftDown && leftWasDown) recordEdit(drag.release());
+      leftWasDown = leftDown;
+      if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) {
+        const auto turned = drag.turn(pressed(GLFW_KEY_R) ? 15 : -15);
+        if (drag.selected() && scene.objects[*drag.selected()].movable) showMoved(*drag.selected());
+        recordEdit(turned);
+      }
+      if (pressed(GLFW_KEY_ESCAPE)) {
+        recordEdit(drag.release());
+        drag.deselect();
+      }
+      if (pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL) || panel.undoRequested) afterHistoryStep(edits.undo());
+      if (pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL) || panel.redoRequested) afterHistoryStep(edits.redo());
+      if (pressed(GLFW_KEY_S, GLFW_MOD_CONTROL) || panel.saveRequested) {
+        panel.saveReport = edits.save();
+        std::cout << "walkrad view: " << panel.saveReport << std::endl;
+      }
+      panel.undoRequested = panel.redoRequested = panel.saveRequested = false;
 
       std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
       if (newest != shown) {
@@ -199,6 +282,17 @@ int runView(const ViewOptions& options) {
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
       panel.walkSpeed = walk.speed;
+      panel.selected.clear();
+      if (const auto selected = edits.drag().selected()) {
+        const engine::Object& o = scene.objects[*selected];
+        panel.selected = o.name;
+        panel.selectedMovable = o.movable;
+        panel.selectedPosition = o.position;
+        panel.selectedTurn = o.rotateYDeg;
+      }
+      panel.canUndo = edits.history().canUndo();
+      panel.canRedo = edits.history().canRedo();
+      panel.unsaved = edits.history().unsaved();
       drawScenePanel(scene, mesh, *shown, panel);
       if (panel.paused != shown->paused) lighting.setPaused(panel.paused);
       if (panel.restartRequested) {
@@ -220,6 +314,9 @@ int runView(const ViewOptions& options) {
         settings.height = height;
         settings.exposure = panel.exposure;
         settings.wireframe = panel.wireframe;
+        if (const auto selected = edits.drag().selected())
+          for (uint32_t s : edits.editor().surfacesOf(*selected))
+            settings.highlight.push_back({mesh.surfaceEdgeStart[s], mesh.surfaceEdgeStart[s + 1]});
         renderer.draw(settings);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 

@@ -1,0 +1,69 @@
+#include "app/window/object_drag.h"
+
+#include "engine/pick.h"
+
+#include <cmath>
+
+namespace app {
+
+void ObjectDrag::deselect() {
+  if (dragging_) release();
+  selected_.reset();
+}
+
+bool ObjectDrag::press(const Ray& ray) {
+  const engine::Scene& scene = editor_.scene();
+  const auto hit = engine::pickSurface(scene, ray.origin, ray.direction);
+  if (!hit) {
+    selected_.reset();
+    return false;
+  }
+  selected_ = scene.surfaces[hit->surface].object;
+  if (!scene.objects[*selected_].movable) return false;
+  dragging_ = true;
+  start_ = engine::poseOf(scene.objects[*selected_]);
+  grab_ = hit->point;
+  lifted_ = 0;
+  slid_ = glm::dvec3{0};
+  return true;
+}
+
+bool ObjectDrag::follow(const Ray& ray) {
+  if (!dragging_ || ray.direction.y == 0) return false;
+  // The resting plane is the horizontal through the grab point, lifted with the object.
+  const double t = (grab_.y + lifted_ - ray.origin.y) / ray.direction.y;
+  if (!(t > 0)) return false;
+  const glm::dvec3 on = ray.origin + t * ray.direction;
+  slid_ = {on.x - grab_.x, 0, on.z - grab_.z};
+  engine::ObjectPose pose = engine::poseOf(editor_.scene().objects[*selected_]);
+  pose.position = start_.position + slid_ + glm::dvec3{0, lifted_, 0};
+  return editor_.setPose(*selected_, pose);
+}
+
+bool ObjectDrag::lift(double dy) {
+  if (!dragging_) return false;
+  lifted_ += dy;
+  engine::ObjectPose pose = engine::poseOf(editor_.scene().objects[*selected_]);
+  pose.position = start_.position + slid_ + glm::dvec3{0, lifted_, 0};
+  return editor_.setPose(*selected_, pose);
+}
+
+std::optional<engine::PoseEdit> ObjectDrag::release() {
+  if (!dragging_) return std::nullopt;
+  dragging_ = false;
+  const engine::ObjectPose now = engine::poseOf(editor_.scene().objects[*selected_]);
+  if (now == start_) return std::nullopt;
+  return engine::PoseEdit{*selected_, start_, now};
+}
+
+std::optional<engine::PoseEdit> ObjectDrag::turn(double degrees) {
+  if (!selected_ || !editor_.scene().objects[*selected_].movable) return std::nullopt;
+  const engine::ObjectPose before = engine::poseOf(editor_.scene().objects[*selected_]);
+  engine::ObjectPose after = before;
+  after.rotateYDeg = std::remainder(before.rotateYDeg + degrees, 360.0);
+  editor_.setPose(*selected_, after);
+  if (dragging_) return std::nullopt;
+  return engine::PoseEdit{*selected_, before, after};
+}
+
+}  // namespace app

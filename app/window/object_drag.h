@@ -1,0 +1,53 @@
+// Selecting and moving objects with the mouse and keys, as a pure controller over a SceneEditor:
+// the window feeds it rays and key presses, takes back the surfaces that moved and the edits to
+// record. A drag slides the object along the horizontal plane through the point grabbed (its
+// resting plane: furniture stays on the floor); the wheel during a drag lifts it; turns are about
+// the vertical through the object's origin.
+#pragma once
+
+#include "engine/edit_history.h"
+#include "engine/scene_editor.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace app {
+
+struct Ray {
+  glm::dvec3 origin{0}, direction{0, 0, 1};
+};
+
+class ObjectDrag {
+ public:
+  explicit ObjectDrag(engine::SceneEditor& editor) : editor_(editor) {}
+
+  std::optional<uint32_t> selected() const { return selected_; }
+  void deselect();
+  bool dragging() const { return dragging_; }
+
+  // A press of the left button: selects the object under the ray (or nothing) and, when it is
+  // movable, grabs it. Returns whether a drag started.
+  bool press(const Ray& ray);
+  // The mouse moved with the button held: the grabbed object follows the ray's crossing with
+  // its resting plane (not when the ray runs above the horizon). Returns whether it moved.
+  bool follow(const Ray& ray);
+  // Raises the grabbed object by `dy` (scene units; negative lowers it). Returns whether it moved.
+  bool lift(double dy);
+  // The button came up: the drag's edit, when the object moved.
+  std::optional<engine::PoseEdit> release();
+
+  // Turns the selected object (dragged or not) by `degrees` about the vertical. The edit, when
+  // an object is selected, is movable and not being dragged (a drag records its turns with it).
+  std::optional<engine::PoseEdit> turn(double degrees);
+
+ private:
+  engine::SceneEditor& editor_;
+  std::optional<uint32_t> selected_;
+  bool dragging_ = false;
+  engine::ObjectPose start_;   // the pose when the drag began
+  glm::dvec3 grab_{0};         // the point grabbed, at the drag's start
+  double lifted_ = 0;          // height added by the wheel during this drag
+  glm::dvec3 slid_{0};         // horizontal offset from the drag's start
+};
+
+}  // namespace app

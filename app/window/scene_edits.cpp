@@ -1,0 +1,51 @@
+#include "app/window/scene_edits.h"
+
+#include "app/image/atomic_file.h"
+#include "engine/meshed_scene.h"
+#include "engine/scene_saver.h"
+
+#include <exception>
+
+namespace app {
+
+namespace {
+
+engine::SceneEditor meshedEditor(engine::Scene scene) {
+  engine::MeshedScene meshed = engine::meshScene(scene);
+  return engine::SceneEditor(std::move(scene), std::move(meshed));
+}
+
+}  // namespace
+
+SceneEdits::SceneEdits(std::string path, std::string text, engine::Scene scene)
+    : path_(std::move(path)), text_(std::move(text)), editor_(meshedEditor(std::move(scene))) {}
+
+std::optional<uint32_t> SceneEdits::undo() {
+  if (const auto dragged = drag_.release()) history_.record(*dragged);  // a drag in progress first
+  const auto edit = history_.undo();
+  if (!edit) return std::nullopt;
+  editor_.setPose(edit->object, edit->before);
+  return edit->object;
+}
+
+std::optional<uint32_t> SceneEdits::redo() {
+  if (const auto dragged = drag_.release()) history_.record(*dragged);
+  const auto edit = history_.redo();
+  if (!edit) return std::nullopt;
+  editor_.setPose(edit->object, edit->after);
+  return edit->object;
+}
+
+std::string SceneEdits::save() {
+  try {
+    const std::string text = engine::sceneTextWithPoses(text_, editor_.scene());
+    writeFileAtomically(path_, text);
+    text_ = text;
+    history_.markSaved();
+    return "saved " + path_;
+  } catch (const std::exception& e) {
+    return std::string("not saved: ") + e.what();
+  }
+}
+
+}  // namespace app

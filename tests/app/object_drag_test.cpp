@@ -1,0 +1,116 @@
+// Selecting and dragging objects with rays, as the window's mouse does.
+#include "app/view/view_camera.h"
+#include "app/window/object_drag.h"
+#include "app/window/scene_edits.h"
+#include "engine/scene_loader.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+namespace app {
+namespace {
+
+// A room (fixed) with a 1 m box (movable) standing on its floor at x, z in 1..2.
+constexpr const char* kScene = R"({
+  "format": "walkrad-scene/1", "settings": { "patch_size": 0.5 },
+  "materials": { "white": { "reflectance": [0.5, 0.5, 0.5] }, "lamp": { "reflectance": [0.5, 0.5, 0.5], "emission": [4, 4, 4] } },
+  "objects": [
+    { "name": "room", "movable": false,
+      "solids": [ { "profile": [[0, 0], [4, 0], [4, 3], [0, 3]], "from": 0, "to": 2.5, "inward": true, "material": "white",
+                    "faces": { "top": { "holes": [ { "polygon": [[1, 1], [2, 1], [2, 2], [1, 2]], "fill": "lamp" } ] } } } ] },
+    { "name": "box", "solids": [ { "profile": [[1, 1], [2, 1], [2, 2], [1, 2]], "from": 0, "to": 1, "material": "white" } ] }
+  ] })";
+
+SceneEdits editsOf(const std::string& path = "unused.json") {
+  return SceneEdits(path, kScene, engine::parseScene(kScene, path));
+}
+
+// A ray from above the room's floor, looking down at (x, z).
+Ray down(double x, double z) { return {{x, 2, z}, {0, -1, 0}}; }
+
+TEST(ObjectDrag, ADragSlidesTheBoxOnTheFloorAndRecordsOneEdit) {
+  SceneEdits edits = editsOf();
+  ObjectDrag& drag = edits.drag();
+  ASSERT_TRUE(drag.press(down(1.5, 1.5)));  // the box's top
+  EXPECT_EQ(edits.editor().scene().objects[*drag.selected()].name, "box");
+  // Grabbed on its top (y = 1), the box follows the ray's crossing with the plane y = 1.
+  EXPECT_TRUE(drag.follow({{2.5, 2, 1.5}, glm::normalize(glm::dvec3{0.5, -1, 0.25})}));
+  const engine::Object& box = edits.editor().scene().objects[*drag.selected()];
+  EXPECT_NEAR(box.position.x, 1.5, 1e-12);
+  EXPECT_NEAR(box.position.z, 0.25, 1e-12);
+  EXPECT_EQ(box.position.y, 0);  // still on the floor
+  EXPECT_TRUE(drag.lift(0.5));
+  EXPECT_EQ(box.position.y, 0.5);
+  // A ray above the horizon leaves the box where it was.
+  EXPECT_FALSE(drag.follow({{2, 2, 2}, {0, 1, 0}}));
+  const auto edit = drag.release();
+  ASSERT_TRUE(edit);
+  EXPECT_EQ(edit->before.position, glm::dvec3{0});
+  EXPECT_EQ(edit->after.position, box.position);
+  EXPECT_FALSE(drag.dragging());
+}
+
+TEST(ObjectDrag, FixedObjectsAreSelectedButNotDragged) {
+  SceneEdits edits = editsOf();
+  ObjectDrag& drag = edits.drag();
+  EXPECT_FALSE(drag.press(down(3, 2.5)));  // the floor
+  ASSERT_TRUE(drag.selected());
+  EXPECT_EQ(edits.editor().scene().objects[*drag.selected()].name, "room");
+  EXPECT_FALSE(drag.follow(down(3.5, 2.5)));
+  EXPECT_FALSE(drag.turn(15));
+  EXPECT_FALSE(drag.release());
+  EXPECT_FALSE(drag.press({{2, 1, 1.5}, {0, 0, 1}}) && drag.selected());  // misses everything: no selection
+}
+
+TEST(ObjectDrag, TurnsUndoAndRedo) {
+  SceneEdits edits = editsOf();
+  ObjectDrag& drag = edits.drag();
+  drag.press(down(1.5, 1.5));
+  EXPECT_FALSE(drag.release());  // a click without a move is no edit
+  const auto turned = drag.turn(15);
+  ASSERT_TRUE(turned);
+  edits.record(*turned);
+  const uint32_t box = *drag.selected();
+  EXPECT_EQ(edits.editor().scene().objects[box].rotateYDeg, 15);
+  EXPECT_EQ(edits.undo(), box);
+  EXPECT_EQ(edits.editor().scene().objects[box].rotateYDeg, 0);
+  EXPECT_EQ(edits.redo(), box);
+  EXPECT_EQ(edits.editor().scene().objects[box].rotateYDeg, 15);
+  EXPECT_FALSE(edits.redo());
+}
+
+TEST(SceneEdits, SavingWritesThePosesAndAFailedSaveLosesNothing) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "walkrad_scene_edits_test";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::string path = (folder / "scene.json").string();
+  std::ofstream(path) << kScene;
+  SceneEdits edits = editsOf(path);
+  ObjectDrag& drag = edits.drag();
+  drag.press(down(1.5, 1.5));
+  drag.lift(0.25);
+  edits.record(*drag.release());
+  EXPECT_TRUE(edits.history().unsaved());
+  EXPECT_EQ(edits.save(), "saved " + path);
+  EXPECT_FALSE(edits.history().unsaved());
+  EXPECT_EQ(engine::loadScene(path).objects[1].position.y, 0.25);
+
+  // The temporary file cannot be made (a folder stands where it would go; even root cannot open
+  // that as a file): the save fails with a report and the scene's file stays as it was.
+  edits.undo();
+  const std::filesystem::path blocker = path + ".tmp." + std::to_string(::getpid());
+  std::filesystem::create_directory(blocker);
+  const std::string report = edits.save();
+  EXPECT_EQ(report.rfind("not saved: ", 0), 0u) << report;
+  EXPECT_TRUE(edits.history().unsaved());
+  EXPECT_EQ(engine::loadScene(path).objects[1].position.y, 0.25);
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace app
