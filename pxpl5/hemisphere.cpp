@@ -61,7 +61,7 @@ int localPolygon(const ProjectionInput& in, size_t index, glm::dvec3* v, glm::dv
     const glm::dvec3 e = b - v[0];
     extent2 = std::max(extent2, glm::dot(e, e));
   }
-  offset = glm::dot(normal, centre / static_cast<double>(n));
+  offset = glm::dot(normal, centre) / static_cast<double>(n);  // one division, not three
   // The point's own plane (or a degenerate polygon): seen edge-on, it covers nothing. The plane's
   // distance |offset| / |normal| against 1e-6 of the polygon's size, squared.
   const double normal2 = glm::dot(normal, normal);
