@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--threads", render.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
       ->check(CLI::Range(1, 64));
   renderCommand->add_flag("--quiet", render.quiet, "no progress lines on stdout");
+  renderCommand->add_option("--move", render.moves, "after converging, move OBJECT by DX,DY,DZ and converge again (OBJECT:DX,DY,DZ; repeatable)")
+      ->allow_extra_args(false);
 
   app::ViewOptions view;
   CLI::App* viewCommand = cli.add_subcommand("view", "open the walkthrough window (GLFW + Dear ImGui)");

@@ -21,6 +21,11 @@ uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
   return shots;
 }
 
+void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<radiosity::Surface>& surfaces,
+               const radiosity::SolverSettings& settings) {
+  solver = std::make_unique<radiosity::Solver>(surfaces, settings);
+}
+
 LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings)
     : surfaces_(std::move(surfaces)), settings_(settings) {
   // The first solver is made here, so bad input throws to the caller rather than on the thread.
@@ -49,15 +54,17 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
       wake_.wait(lock, ready);
       if (stop_) return;
       if (restart_ || editsApplied_ < editsRequested_) {
+        const bool edited = editsApplied_ < editsRequested_;
         restart_ = false;
-        if (editsApplied_ < editsRequested_) {
+        if (edited) {
           surfaces_ = std::move(edited_);
           edited_.clear();
           editsApplied_ = editsRequested_;
         }
         lock.unlock();
         try {
-          solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
+          if (edited) applyEdit(solver, surfaces_, settings_.solver);
+          else solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
           done = solver->converged(settings_.converge);
           failed = unpublished = false;
           publish(*solver, done);

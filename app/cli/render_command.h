@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace app {
 
@@ -21,6 +22,7 @@ struct RenderOptions {
   uint64_t maxShots = UINT64_MAX;  // or until this many shots
   int threads = 1;                 // pxpl5 graphics processors
   bool quiet = false;              // no progress lines (stdout)
+  std::vector<std::string> moves;  // OBJECT:DX,DY,DZ, applied in order after converging
 };
 
 // Runs the command; returns the process exit code (0, 2 for bad input, 1 otherwise), having

@@ -67,3 +67,16 @@ walkrad_cli_test(mesh_scene 0 ARGS mesh ${PROJECT_SOURCE_DIR}/assets/cornell.jso
 walkrad_cli_test(mesh_hole_outside 2 ARGS mesh ${cli_dir}/hole_outside.json STDERR "hole_outside.json: holes\\[0\\]: hole is not strictly inside")
 walkrad_cli_test(mesh_no_patch_size 2 ARGS mesh ${cli_dir}/no_patch_size.json STDERR "no_patch_size.json: patch_size: missing required field")
 walkrad_cli_test(mesh_bad_repeat 2 ARGS mesh ${cli_dir}/wall_with_window.json --repeat 0 STDERR "^walkrad: .*repeat")
+
+# --move: after converging, an object moves through the edit path and the light converges again.
+walkrad_cli_test(render_move 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-move.png
+                 --converge 0.3 --width 64 --height 48 --move "short block:40,0,-20" --move "tall block:0,10,0"
+                 STDOUT "move 1 converged in [0-9.e-]+ s: [0-9]+ shots.*move 2 converged")
+walkrad_cli_test(render_move_fixed 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --move "room:1,0,0" STDERR "--move \"room:1,0,0\": \"room\" is not movable")
+walkrad_cli_test(render_move_unknown 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --move "sofa:1,0,0" STDERR "no object \"sofa\"")
+walkrad_cli_test(render_move_two_numbers 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --move "tall block:1,0" STDERR "expected three numbers")
+walkrad_cli_test(render_move_not_a_number 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --move "tall block:1,x,0" STDERR "expected three numbers")
