@@ -20,12 +20,24 @@ struct Screen {
   }
 };
 
+// A linear expression as the ring carries it (README: 16 bytes): d, e and f are zeros. The
+// emitter stores a + 0 and c + 0 (a negative zero made positive), after which the zeros' terms
+// add nothing in the contract's formula, so the fused evaluator may leave them out and still
+// give the reference's bits. Against the caller's expression only the sign of a zero result
+// can differ, which changes no pixel's outcome.
+struct LinearExpression {
+  float a = 0, b = 0, c = 0, t = 0;
+  static LinearExpression of(const Expression& e) { return {e.a + 0.0f, e.b, e.c + 0.0f, e.t}; }
+  Expression whole() const { return {a, b, c, 0, 0, 0, t}; }
+};
+
+// A primitive's expressions are its edges, then its depth: edgeCount + 1 of them from `first`
+// in the batch's `linear` or (any of them quadratic) `quadratic` list.
 struct SetupPrimitive {
   PixelRect bounds;  // within the screen, not empty
-  uint32_t firstEdge = 0, edgeCount = 0;
-  Expression depth;
+  uint32_t first = 0, edgeCount = 0;
   uint32_t value = 0;
-  bool quadratic = false;  // any expression uses the quadratic terms
+  bool quadratic = false;
 };
 
 // One graphics processor's output for one batch of the caller's primitives: its set-up
@@ -33,7 +45,8 @@ struct SetupPrimitive {
 struct Emitter::Batch {
   const Screen* screen = nullptr;
   std::vector<SetupPrimitive> primitives;
-  std::vector<Expression> edges;
+  std::vector<LinearExpression> linear;
+  std::vector<Expression> quadratic;
   std::vector<uint32_t> binStart;  // regionCount + 1 offsets into binned
   std::vector<uint32_t> binned;    // primitive indices grouped by region
   std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (region, primitive) before grouping
@@ -45,7 +58,8 @@ struct Emitter::Batch {
 
   void clear() {
     primitives.clear();
-    edges.clear();
+    linear.clear();
+    quadratic.clear();
     pairs.clear();
   }
   // Counting sort of `pairs` by region into binStart/binned; stable, so emission order stays.

@@ -14,6 +14,13 @@ float evaluate(const Expression& ex, float x, float y, float term) {
   return ((rowA * x + ex.d * (x * x)) + rowC) + ex.t * term;
 }
 
+// The primitive's expressions whole (a..f, t), in `whole` if they travel as linear ones.
+const Expression* wholeExpressions(const SetupPrimitive& primitive, PrimitiveExpressions expressions, Expression* whole) {
+  if (primitive.quadratic) return expressions.quadratic;
+  for (uint32_t k = 0; k <= primitive.edgeCount; ++k) whole[k] = expressions.linear[k].whole();
+  return whole;
+}
+
 // One expression's coefficients with the row's y folded in.
 struct RowTerms {
   float a = 0, c = 0, d = 0, t = 0;
@@ -31,6 +38,7 @@ RowTerms rowTerms(const Expression& ex, float y) {
 template <bool kQuadratic>
 [[gnu::always_inline]] inline void evaluateRows(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
                   EvaluatorStats& stats) {
+  const Expression& depthExpression = edges[primitive.edgeCount];
   const uint32_t n = primitive.edgeCount;
   const uint32_t value = primitive.value;
   const int lo = area.x0, width = area.x1 - area.x0;
@@ -57,7 +65,7 @@ template <bool kQuadratic>
       }
     }
     // Depth: enabled pixels where the primitive is nearer take its depth and value.
-    const RowTerms d = rowTerms(primitive.depth, fy);
+    const RowTerms d = rowTerms(depthExpression, fy);
     for (int i = 0; i < width; ++i) {
       float w = d.a * xs[i];
       if constexpr (kQuadratic) w = w + d.d * (xs[i] * xs[i]);
@@ -80,32 +88,23 @@ template <bool kQuadratic>
 // Rows are short (a small polygon's bounds), so this matters more than the lanes wasted. The
 // runs start at the area, not at a multiple of eight (a five-pixel row is one run, not two),
 // moved left where they would leave the region: another renderer may be writing the next one.
-// Same expressions, same bits.
+// Same expressions, same bits (the zeros a stored linear expression leaves out add nothing: batch.h).
 constexpr int kLanes = 8;
 
 template <int kEdges>
-[[gnu::always_inline]] inline void evaluateRowsFused(const SetupPrimitive& primitive, const Expression* edges, PixelRect area,
+[[gnu::always_inline]] inline void evaluateRowsFused(const SetupPrimitive& primitive, const LinearExpression* ex, PixelRect area,
                                                      const PixelMemory& memory, EvaluatorStats& stats) {
   constexpr int kTerms = kEdges + 1;  // the edges, then the depth
   const uint32_t value = primitive.value;
   const int width = (area.x1 - area.x0 + kLanes - 1) & ~(kLanes - 1);  // a multiple of kLanes: no remainder
   const int regionEnd = (area.x0 & ~(kRegionSize - 1)) + kRegionSize;
   const int lo = std::min(area.x0, regionEnd - width);
-  const Expression* ex[kTerms];
-  for (int k = 0; k < kEdges; ++k) ex[k] = &edges[k];
-  ex[kEdges] = &primitive.depth;
-  // What is the same on every row. The expressions are linear, so d, e and f are zeros (of
-  // either sign) and e*y, d*(x*x), f*(y*y) are those same zeros for any row and column: the
-  // contract's (a + e*y)*x + d*(x*x) per lane is (a + e)*x + d, computed once.
+  // What is the same on every row: each lane's a*x and whether it lies in the area.
   alignas(64) float ax[kTerms][kRegionSize];
+  for (int k = 0; k < kTerms; ++k)
+    for (int i = 0; i < width; ++i) ax[k][i] = ex[k].a * static_cast<float>(lo + i);
   alignas(64) uint32_t inArea[kRegionSize];
-  for (int k = 0; k < kTerms; ++k) {
-    const float a = ex[k]->a + ex[k]->e, d = ex[k]->d;
-    for (int i = 0; i < width; ++i) ax[k][i] = a * static_cast<float>(lo + i) + d;
-  }
   for (int i = 0; i < width; ++i) inArea[i] = lo + i >= area.x0 && lo + i < area.x1 ? ~0u : 0u;
-  float b[kTerms], c[kTerms], f[kTerms], t[kTerms];
-  for (int k = 0; k < kTerms; ++k) b[k] = ex[k]->b, c[k] = ex[k]->c, f[k] = ex[k]->f, t[k] = ex[k]->t;
   // Ask for the rows' pixel memory at once: they lie a stride apart, which the hardware
   // prefetcher does not foresee, and their misses then overlap instead of stalling row by row.
   for (int y = area.y0; y < area.y1; ++y) {
@@ -119,10 +118,9 @@ template <int kEdges>
   // Pixels written, counted per lane and added up once.
   alignas(32) uint32_t won[kLanes] = {};
   for (int y = area.y0; y < area.y1; ++y) {
-    // The row's part, (b*y + c) + f*(y*y), with f*(y*y) = f as above.
     const float fy = static_cast<float>(y);
     float rowC[kTerms];
-    for (int k = 0; k < kTerms; ++k) rowC[k] = (b[k] * fy + c[k]) + f[k];
+    for (int k = 0; k < kTerms; ++k) rowC[k] = ex[k].b * fy + ex[k].c;
     const size_t rowStart = static_cast<size_t>(y) * static_cast<size_t>(memory.stride) + static_cast<size_t>(lo);
     const float* __restrict term = memory.term + rowStart;
     float* __restrict depth = memory.depth + rowStart;
@@ -131,8 +129,8 @@ template <int kEdges>
       for (int l = 0; l < kLanes; ++l) {
         const int i = run + l;
         uint32_t on = inArea[i];
-        for (int k = 0; k < kEdges; ++k) on &= (ax[k][i] + rowC[k]) + t[k] * term[i] >= 0 ? ~0u : 0u;
-        const float w = (ax[kEdges][i] + rowC[kEdges]) + t[kEdges] * term[i];
+        for (int k = 0; k < kEdges; ++k) on &= (ax[k][i] + rowC[k]) + ex[k].t * term[i] >= 0 ? ~0u : 0u;
+        const float w = (ax[kEdges][i] + rowC[kEdges]) + ex[kEdges].t * term[i];
         const uint32_t wins = on & (w > depth[i] ? ~0u : 0u);
         depth[i] = std::bit_cast<float>((std::bit_cast<uint32_t>(w) & wins) | (std::bit_cast<uint32_t>(depth[i]) & ~wins));
         values[i] = (value & wins) | (values[i] & ~wins);
@@ -146,15 +144,17 @@ template <int kEdges>
 
 }  // namespace
 
-void evaluateReference(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+void evaluateReference(const SetupPrimitive& primitive, PrimitiveExpressions expressions, PixelRect area, const PixelMemory& memory,
                        EvaluatorStats& stats) {
+  Expression whole[Emitter::kMaxEdges + 1];
+  const Expression* edges = wholeExpressions(primitive, expressions, whole);
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       const size_t at = static_cast<size_t>(y) * static_cast<size_t>(memory.stride) + static_cast<size_t>(x);
       const float fx = static_cast<float>(x), fy = static_cast<float>(y), term = memory.term[at];
       bool on = true;
       for (uint32_t k = 0; k < primitive.edgeCount; ++k) on = on && evaluate(edges[k], fx, fy, term) >= 0;
-      const float w = evaluate(primitive.depth, fx, fy, term);
+      const float w = evaluate(edges[primitive.edgeCount], fx, fy, term);
       if (on && w > memory.depth[at]) {
         memory.depth[at] = w;
         memory.value[at] = primitive.value;
@@ -171,15 +171,18 @@ void evaluateReference(const SetupPrimitive& primitive, const Expression* edges,
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
 [[gnu::target_clones("avx2", "default")]]
 #endif
-void evaluateVector(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+void evaluateVector(const SetupPrimitive& primitive, PrimitiveExpressions expressions, PixelRect area, const PixelMemory& memory,
                     EvaluatorStats& stats) {
-  if (primitive.quadratic) return evaluateRows<true>(primitive, edges, area, memory, stats);
+  if (primitive.quadratic) return evaluateRows<true>(primitive, expressions.quadratic, area, memory, stats);
   switch (primitive.edgeCount) {
-    case 3: return evaluateRowsFused<3>(primitive, edges, area, memory, stats);
-    case 4: return evaluateRowsFused<4>(primitive, edges, area, memory, stats);
-    case 5: return evaluateRowsFused<5>(primitive, edges, area, memory, stats);
-    case 6: return evaluateRowsFused<6>(primitive, edges, area, memory, stats);
-    default: return evaluateRows<false>(primitive, edges, area, memory, stats);
+    case 3: return evaluateRowsFused<3>(primitive, expressions.linear, area, memory, stats);
+    case 4: return evaluateRowsFused<4>(primitive, expressions.linear, area, memory, stats);
+    case 5: return evaluateRowsFused<5>(primitive, expressions.linear, area, memory, stats);
+    case 6: return evaluateRowsFused<6>(primitive, expressions.linear, area, memory, stats);
+    default: {
+      Expression whole[Emitter::kMaxEdges + 1];
+      return evaluateRows<false>(primitive, wholeExpressions(primitive, expressions, whole), area, memory, stats);
+    }
   }
 }
 

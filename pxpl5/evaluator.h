@@ -21,10 +21,16 @@ struct EvaluatorStats {
   uint64_t written = 0;   // pixels that took the primitive's depth and value
 };
 
-// `area` is the primitive's bounds within the region; `edges` its edge expressions.
-void evaluateReference(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+// A primitive's expressions (SetupPrimitive): `linear` or `quadratic` as the primitive says.
+struct PrimitiveExpressions {
+  const LinearExpression* linear = nullptr;
+  const Expression* quadratic = nullptr;
+};
+
+// `area` is the primitive's bounds within the region.
+void evaluateReference(const SetupPrimitive& primitive, PrimitiveExpressions expressions, PixelRect area, const PixelMemory& memory,
                        EvaluatorStats& stats);
-void evaluateVector(const SetupPrimitive& primitive, const Expression* edges, PixelRect area, const PixelMemory& memory,
+void evaluateVector(const SetupPrimitive& primitive, PrimitiveExpressions expressions, PixelRect area, const PixelMemory& memory,
                     EvaluatorStats& stats);
 
 }  // namespace pxpl5

@@ -36,8 +36,15 @@ bool Emitter::convex(PixelRect bounds, std::span<const Expression> edges, const 
   const auto index = static_cast<uint32_t>(batch.primitives.size());
   bool quadratic = depth.quadratic();
   for (const Expression& e : edges) quadratic = quadratic || e.quadratic();
-  batch.primitives.push_back({bounds, static_cast<uint32_t>(batch.edges.size()), static_cast<uint32_t>(edges.size()), depth, value, quadratic});
-  batch.edges.insert(batch.edges.end(), edges.begin(), edges.end());
+  const size_t first = quadratic ? batch.quadratic.size() : batch.linear.size();
+  batch.primitives.push_back({bounds, static_cast<uint32_t>(first), static_cast<uint32_t>(edges.size()), value, quadratic});
+  if (quadratic) {
+    batch.quadratic.insert(batch.quadratic.end(), edges.begin(), edges.end());
+    batch.quadratic.push_back(depth);
+  } else {
+    for (const Expression& e : edges) batch.linear.push_back(LinearExpression::of(e));
+    batch.linear.push_back(LinearExpression::of(depth));
+  }
   // Sort to the regions the bounds touch (the graphics processor's bucket sort).
   for (int ry = bounds.y0 / kRegionSize; ry <= (bounds.y1 - 1) / kRegionSize; ++ry)
     for (int rx = bounds.x0 / kRegionSize; rx <= (bounds.x1 - 1) / kRegionSize; ++rx)
@@ -186,11 +193,12 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
         const SetupPrimitive& p = batch.primitives[batch.binned[i]];
         const PixelRect area{std::max(p.bounds.x0, region.x0), std::max(p.bounds.y0, region.y0), std::min(p.bounds.x1, region.x1),
                              std::min(p.bounds.y1, region.y1)};
-        const Expression* edges = batch.edges.data() + p.firstEdge;
+        const PrimitiveExpressions expressions = p.quadratic ? PrimitiveExpressions{nullptr, batch.quadratic.data() + p.first}
+                                                             : PrimitiveExpressions{batch.linear.data() + p.first, nullptr};
         if (reference)
-          evaluateReference(p, edges, area, memory, s);
+          evaluateReference(p, expressions, area, memory, s);
         else
-          evaluateVector(p, edges, area, memory, s);
+          evaluateVector(p, expressions, area, memory, s);
         ++load.primitives;
       }
     }
