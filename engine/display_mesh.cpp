@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -55,6 +57,30 @@ DisplayMesh displayMesh(const MeshedScene& meshed) {
   mesh.surfaceVertexStart.push_back(static_cast<uint32_t>(mesh.positions.size()));
   mesh.surfaceEdgeStart.push_back(static_cast<uint32_t>(mesh.edges.size()));
   return mesh;
+}
+
+void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh) {
+  const size_t surfaces = std::min(old.surfaceVertexStart.size(), fresh.surfaceVertexStart.size()) - 1;
+  for (size_t s = 0; s < surfaces; ++s) {
+    const uint32_t oldFirst = old.surfaceVertexStart[s], oldEnd = old.surfaceVertexStart[s + 1];
+    const uint32_t first = fresh.surfaceVertexStart[s], end = fresh.surfaceVertexStart[s + 1];
+    if (end - first == oldEnd - oldFirst) {
+      std::copy(old.radiance.begin() + oldFirst, old.radiance.begin() + oldEnd, fresh.radiance.begin() + first);
+      continue;
+    }
+    std::map<std::array<float, 3>, glm::vec3> byPlace;
+    glm::vec3 mean{0};
+    for (uint32_t v = oldFirst; v < oldEnd; ++v) {
+      const glm::vec3& p = old.positions[v];
+      byPlace[{p.x, p.y, p.z}] = old.radiance[v];
+      mean += old.radiance[v] / static_cast<float>(oldEnd - oldFirst);
+    }
+    for (uint32_t v = first; v < end; ++v) {
+      const glm::vec3& p = fresh.positions[v];
+      const auto found = byPlace.find({p.x, p.y, p.z});
+      fresh.radiance[v] = found == byPlace.end() ? mean : found->second;
+    }
+  }
 }
 
 void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh) {

@@ -34,6 +34,12 @@ struct DisplayMesh {
 // each element edge once.
 DisplayMesh displayMesh(const MeshedScene& meshed);
 
+// Radiance for `fresh`, rebuilt from the same surfaces after some were meshed again, until the
+// solver has lit it: a surface whose vertex count is unchanged keeps its radiance vertex by
+// vertex; a remeshed one gives each vertex the radiance of an old vertex at the same place, or
+// the surface's old mean where there is none.
+void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh);
+
 // Copies the world positions of `surfaces` from `meshed` (after they moved; same meshes).
 void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh);
 

@@ -79,6 +79,7 @@ struct Camera {
 struct Surface {
   Ring3 outer;               // counter-clockwise seen from the front
   std::vector<Ring3> holes;  // clockwise seen from the front
+  size_t contactHoles = 0;   // the last holes are footprints of faces resting on it (contact_cutouts.h)
   Vec3 normal{0, 1, 0};      // unit, toward the front (the side that reflects and emits)
   double area = 0;           // outer minus holes
   uint32_t material = 0;     // index into Scene::materials

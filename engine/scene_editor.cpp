@@ -1,5 +1,6 @@
 #include "engine/scene_editor.h"
 
+#include "engine/contact_cutouts.h"
 #include "engine/solid_surfaces.h"
 
 #include <glm/geometric.hpp>
@@ -19,8 +20,12 @@ SceneEditor::SceneEditor(Scene scene, MeshedScene meshed)
                                 std::to_string(scene_.surfaces.size()));
   for (uint32_t s = 0; s < scene_.surfaces.size(); ++s) surfacesOf_[scene_.surfaces[s].object].push_back(s);
   homeSurfaces_ = scene_.surfaces;
+  removeContacts(homeSurfaces_);
+  uncut_ = homeSurfaces_;
   for (const SurfaceMesh& m : meshed_.surfaces) homePositions_.push_back(m.positions);
+  homeMesh_.assign(scene_.surfaces.size(), 1);
   for (const Object& o : scene_.objects) homePoses_.push_back(poseOf(o));
+  contactTolerance_ = contactTolerance(scene_);
 }
 
 std::optional<uint32_t> SceneEditor::findObject(std::string_view name) const {
@@ -48,13 +53,31 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   auto place = [&](const Vec3& p) { return atHome ? p : turn * (p - from.translation) + to.translation; };
   for (uint32_t s : surfacesOf_[object]) {
     const Surface& before = homeSurfaces_[s];
-    Surface& surface = scene_.surfaces[s];
+    Surface& surface = uncut_[s];
     for (size_t i = 0; i < before.outer.size(); ++i) surface.outer[i] = place(before.outer[i]);
     for (size_t h = 0; h < before.holes.size(); ++h)
       for (size_t i = 0; i < before.holes[h].size(); ++i) surface.holes[h][i] = place(before.holes[h][i]);
     surface.normal = atHome ? before.normal : glm::normalize(turn * before.normal);
-    std::vector<Vec3>& positions = meshed_.surfaces[s].positions;
-    for (size_t i = 0; i < positions.size(); ++i) positions[i] = place(homePositions_[s][i]);
+  }
+
+  // Cut-outs anew; a surface whose footprints changed, or that has or had any while it moves,
+  // is meshed again; the moved object's other surfaces move their meshes along.
+  std::vector<Surface> cut = uncut_;
+  cutOutContacts(cut, contactTolerance_);
+  remeshed_.clear();
+  for (uint32_t s = 0; s < cut.size(); ++s) {
+    const bool ofObject = scene_.surfaces[s].object == object;
+    const bool rigid = ofObject && homeMesh_[s] && cut[s].contactHoles == 0 && scene_.surfaces[s].contactHoles == 0;
+    if (!ofObject && cut[s].holes == scene_.surfaces[s].holes) continue;
+    scene_.surfaces[s] = std::move(cut[s]);
+    if (rigid) {
+      std::vector<Vec3>& positions = meshed_.surfaces[s].positions;
+      for (size_t i = 0; i < positions.size(); ++i) positions[i] = place(homePositions_[s][i]);
+    } else {
+      meshed_.surfaces[s] = meshSurface(scene_.surfaces[s], mesher_);
+      homeMesh_[s] = 0;
+      remeshed_.push_back(s);
+    }
   }
   scene_.computeBounds();
   return true;

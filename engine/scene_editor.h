@@ -1,7 +1,10 @@
 // Moving objects of a loaded, meshed scene: the one edit path that the window's drags and
 // `walkrad render --move` share. A moved object's surfaces keep their meshes and move rigidly
-// with it. Every pose is reached from the pose the scene was loaded with in one rigid motion, so
-// moving an object back restores its loaded geometry exactly, however many moves came between.
+// with it; contact cut-outs (contact_cutouts.h) follow: a surface whose footprints changed (the
+// floor under a moved box, the box's own top when something stood on it) is meshed again.
+// Every pose is reached from the pose the scene was loaded with in one rigid motion, so moving
+// an object back restores the loaded geometry and meshes exactly, however many moves came
+// between.
 #pragma once
 
 #include "engine/meshed_scene.h"
@@ -32,18 +35,29 @@ class SceneEditor {
   const std::vector<uint32_t>& surfacesOf(uint32_t object) const { return surfacesOf_[object]; }
   std::optional<uint32_t> findObject(std::string_view name) const;
 
-  // Puts `object` at `pose`, surfaces, meshes and scene bounds with it; returns whether anything
-  // moved. Throws std::invalid_argument for an object that does not exist or is not movable.
+  // Puts `object` at `pose`, surfaces, meshes, cut-outs and scene bounds with it; returns
+  // whether anything moved. Throws std::invalid_argument for an object that does not exist or is
+  // not movable.
   bool setPose(uint32_t object, const ObjectPose& pose);
+  // The surfaces the last setPose meshed again (their element counts may differ); the object's
+  // other surfaces kept their meshes.
+  const std::vector<uint32_t>& remeshed() const { return remeshed_; }
 
  private:
   Scene scene_;
   MeshedScene meshed_;
   std::vector<std::vector<uint32_t>> surfacesOf_;  // per object
-  // As loaded: the surfaces, their mesh positions and the objects' poses.
+  // The surfaces without cut-outs where the objects stand now, from which cut-outs are made.
+  std::vector<Surface> uncut_;
+  // As loaded: the surfaces without cut-outs, the mesh positions of those that had none, the
+  // objects' poses.
   std::vector<Surface> homeSurfaces_;
   std::vector<std::vector<Vec3>> homePositions_;
+  std::vector<uint8_t> homeMesh_;  // per surface: its mesh is still the loaded one (moved rigidly)
   std::vector<ObjectPose> homePoses_;
+  double contactTolerance_ = 0;
+  mesher::Mesher mesher_;
+  std::vector<uint32_t> remeshed_;
 };
 
 }  // namespace engine

@@ -1,5 +1,6 @@
 #include "engine/scene_loader.h"
 
+#include "engine/contact_cutouts.h"
 #include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
 #include "engine/json_reader.h"
@@ -298,6 +299,8 @@ Scene parseScene(std::string_view text, const std::string& file) {
   checkPatchSizes(scene, in);
   // Coplanar faces of one material that touch become one surface (3.2).
   scene.surfaces = mergeCoplanarSurfaces(scene, std::move(scene.surfaces), 1e-9 * extent);
+  // Faces resting on other objects' surfaces are cut out of them.
+  cutOutContacts(scene.surfaces, contactTolerance(scene));
   return scene;
 }
 

@@ -208,12 +208,29 @@ int runView(const ViewOptions& options) {
     WalkSettings walk;
     walk.speed = defaultWalkSpeed(scene);
 
-    // An object moved: the display follows at once, the light after the edit is recorded.
+    // An object moved: the display follows at once (a surface meshed again around a footprint
+    // keeps what light it can), the light after the edit is recorded. Snapshots of the light are
+    // shown only when they are of the display's own mesh: of the last edit sent, with no remesh
+    // since.
+    uint64_t editsSent = 0;
+    bool remeshedSinceSent = false;
     auto showMoved = [&](uint32_t object) {
-      engine::updatePositions(edits.editor().meshed(), edits.editor().surfacesOf(object), mesh);
-      renderer.updatePositions(mesh.positions);
+      if (edits.editor().remeshed().empty()) {
+        engine::updatePositions(edits.editor().meshed(), edits.editor().surfacesOf(object), mesh);
+        renderer.updatePositions(mesh.positions);
+        return;
+      }
+      engine::DisplayMesh fresh = engine::displayMesh(edits.editor().meshed());
+      engine::carryRadiance(mesh, fresh);
+      mesh = std::move(fresh);
+      renderer.upload(mesh);
+      remeshedSinceSent = true;
     };
-    auto relight = [&] { lighting.edit(engine::radiosityInput(scene, edits.editor().meshed())); };
+    auto relight = [&] {
+      lighting.edit(engine::radiosityInput(scene, edits.editor().meshed()));
+      ++editsSent;
+      remeshedSinceSent = false;
+    };
     auto recordEdit = [&](const std::optional<engine::PoseEdit>& edit) {
       if (!edit) return;
       edits.record(*edit);
@@ -269,8 +286,10 @@ int runView(const ViewOptions& options) {
       std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
       if (newest != shown) {
         shown = std::move(newest);
-        mesh.radiance = shown->radiance;
-        renderer.updateRadiance(mesh.radiance);
+        if (shown->edits == editsSent && !remeshedSinceSent && shown->radiance.size() == mesh.positions.size()) {
+          mesh.radiance = shown->radiance;
+          renderer.updateRadiance(mesh.radiance);
+        }
         progress.report(*shown);
       }
       if (panel.autoExposureRequested) {

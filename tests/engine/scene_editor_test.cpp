@@ -18,15 +18,24 @@ SceneEditor editorOf(const Json& json) {
   return SceneEditor(std::move(scene), std::move(meshed));
 }
 
-TEST(SceneEditor, TranslationMovesTheObjectsSurfacesAndMeshesOnly) {
+// The box moves with its meshes; the floor it stands on is meshed again around its new
+// footprint; nothing else changes.
+TEST(SceneEditor, TranslationMovesTheObjectAndItsFootprint) {
   SceneEditor editor = editorOf(test::baseScene());
   const Scene before = editor.scene();
   const MeshedScene meshedBefore = editor.meshed();
   const uint32_t box = *editor.findObject("box");
-  const Vec3 offset{0.5, 0, 1.25};
+  const Vec3 offset{0.5, 0, 0.75};
   EXPECT_TRUE(editor.setPose(box, {offset, 0}));
   EXPECT_EQ(editor.scene().objects[box].position, offset);
+  const Surface& floor = test::surfaceOf(editor.scene(), "room", "bottom");
+  const auto floorIndex = static_cast<uint32_t>(&floor - editor.scene().surfaces.data());
+  EXPECT_EQ(editor.remeshed(), std::vector<uint32_t>{floorIndex});
+  ASSERT_EQ(floor.holes.size(), 1u);
+  EXPECT_EQ(floor.holes[0], test::surfaceOf(editor.scene(), "box", "bottom").outer);
+  EXPECT_NE(editor.meshed().surfaces[floorIndex].mesh.elements, meshedBefore.surfaces[floorIndex].mesh.elements);
   for (uint32_t s = 0; s < before.surfaces.size(); ++s) {
+    if (s == floorIndex) continue;
     const bool moved = before.surfaces[s].object == box;
     for (size_t i = 0; i < before.surfaces[s].outer.size(); ++i)
       EXPECT_EQ(editor.scene().surfaces[s].outer[i], before.surfaces[s].outer[i] + (moved ? offset : Vec3{0}));
@@ -36,6 +45,21 @@ TEST(SceneEditor, TranslationMovesTheObjectsSurfacesAndMeshesOnly) {
       EXPECT_NEAR(glm::length(positions[i] - meshedBefore.surfaces[s].positions[i] - (moved ? offset : Vec3{0})), 0, 1e-12);
     EXPECT_EQ(editor.meshed().surfaces[s].mesh.elements, meshedBefore.surfaces[s].mesh.elements);
   }
+}
+
+// Lifted off the floor, or pushed against the wall, the box leaves no footprint; set down again
+// in the open, it does.
+TEST(SceneEditor, FootprintsComeAndGoWithContact) {
+  SceneEditor editor = editorOf(test::baseScene());
+  const uint32_t box = *editor.findObject("box");
+  auto floorHoles = [&] { return test::surfaceOf(editor.scene(), "room", "bottom").holes.size(); };
+  ASSERT_EQ(floorHoles(), 1u);
+  editor.setPose(box, {Vec3{0, 0.25, 0}, 0});
+  EXPECT_EQ(floorHoles(), 0u);
+  editor.setPose(box, {Vec3{-1, 0, 0}, 0});  // its side on the wall x = 0
+  EXPECT_EQ(floorHoles(), 0u);
+  editor.setPose(box, {Vec3{1, 0, 0.5}, 0});
+  EXPECT_EQ(floorHoles(), 1u);
 }
 
 // A quarter turn about +y takes +x to -z (the spec's rule) about the object's origin.
@@ -65,8 +89,10 @@ TEST(SceneEditor, ManyMovesAndBackRestoreTheLoadedGeometryExactly) {
   editor.setPose(box, {Vec3{0}, 0});
   for (size_t s = 0; s < loaded.surfaces.size(); ++s) {
     EXPECT_EQ(editor.scene().surfaces[s].outer, loaded.surfaces[s].outer);
+    EXPECT_EQ(editor.scene().surfaces[s].holes, loaded.surfaces[s].holes);
     EXPECT_EQ(editor.scene().surfaces[s].normal, loaded.surfaces[s].normal);
     EXPECT_EQ(editor.meshed().surfaces[s].positions, meshedLoaded.surfaces[s].positions);
+    EXPECT_EQ(editor.meshed().surfaces[s].mesh.elements, meshedLoaded.surfaces[s].mesh.elements);
   }
   EXPECT_EQ(editor.scene().boundsMin, loaded.boundsMin);
   EXPECT_EQ(editor.scene().boundsMax, loaded.boundsMax);

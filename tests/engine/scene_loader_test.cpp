@@ -262,8 +262,39 @@ TEST(SceneLoader, FilledHoleSharesItsBoundaryExactly) {
   EXPECT_NEAR(lamp.area, 1, 1e-12);
   ASSERT_EQ(ceiling.holes.size(), 1u);
   EXPECT_EQ(lamp.outer, Ring3(ceiling.holes[0].rbegin(), ceiling.holes[0].rend()));
-  // Room and lamp together are closed.
-  expectNear(test::netArea(scene, "room"), Vec3{0}, 1e-12);
+  // Room and lamp together are closed, but for the box's footprint cut out of the floor (1 m2
+  // of floor facing up).
+  expectNear(test::netArea(scene, "room"), Vec3{0, -1, 0}, 1e-12);
+}
+
+// A box standing on the floor is cut out of it: the floor loses the footprint, as a hole equal
+// to the box's bottom face, and nothing is left under the box to light.
+TEST(SceneLoader, FurnitureIsCutOutOfTheFloorItStandsOn) {
+  const Scene scene = parse(test::baseScene());
+  const Surface& floor = surfaceOf(scene, "room", "bottom");
+  const Surface& bottom = surfaceOf(scene, "box", "bottom");
+  ASSERT_EQ(floor.holes.size(), 1u);
+  EXPECT_EQ(floor.holes[0], bottom.outer);
+  EXPECT_NEAR(floor.area, 4 * 3 - 1, 1e-12);
+  // The room's floor alone takes the cut: the box, resting on nothing but the floor, keeps its
+  // faces whole.
+  for (const Surface& s : scene.surfaces) {
+    if (scene.objects[s.object].name == "box") {
+      EXPECT_TRUE(s.holes.empty()) << s.face;
+    }
+  }
+}
+
+// A footprint that reaches the floor's edge (a box against the wall), or hovers above it, is
+// left uncut.
+TEST(SceneLoader, FootprintsAtTheEdgeOrAboveTheFloorAreNotCut) {
+  for (const char* profile : {"[[0, 1], [1, 1], [1, 2], [0, 2]]", "[[1, 1], [2, 1], [2, 2], [1, 2]]"}) {
+    Json j = test::baseScene();
+    j["objects"][1]["solids"][0]["profile"] = Json::parse(profile);
+    if (std::string(profile).find("[0, 1]") == std::string::npos) j["objects"][1]["solids"][0]["from"] = 0.01;
+    const Scene scene = parse(j);
+    EXPECT_TRUE(surfaceOf(scene, "room", "bottom").holes.empty()) << profile;
+  }
 }
 
 // Side hole coordinates: u along the edge at `from` from point N, v from that edge toward `to`.
