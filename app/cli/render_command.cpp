@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <iostream>
@@ -126,8 +127,14 @@ int runRender(const RenderOptions& options) {
     const bool first = solver->step();  // the first relit solution a display could show
     const double firstUpdateMs = millisecondsSince(start);
     shots += first + solve(("move " + std::to_string(i + 1) + " converged").c_str());
+    // Elements that moved or were made anew (the object's, and those of surfaces whose footprints
+    // changed).
+    std::vector<uint32_t> touched = editor.surfacesOf(move.object);
+    touched.insert(touched.end(), editor.remeshed().begin(), editor.remeshed().end());
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     size_t changed = 0;
-    for (uint32_t s : editor.surfacesOf(move.object)) changed += editor.meshed().surfaces[s].mesh.elements.size();
+    for (uint32_t s : touched) changed += editor.meshed().surfaces[s].mesh.elements.size();
     moveStats.push_back({{"object", editor.scene().objects[move.object].name},
                          {"remesh_ms", remeshMs},
                          {"first_update_ms", firstUpdateMs},
