@@ -107,13 +107,13 @@ template <int kEdges>
   for (int i = 0; i < width; ++i) inArea[i] = lo + i >= area.x0 && lo + i < area.x1 ? ~0u : 0u;
   // Ask for the rows' pixel memory at once: they lie a stride apart, which the hardware
   // prefetcher does not foresee, and their misses then overlap instead of stalling row by row.
+  // A row's first line only: most rows are short, and asking for the last as well cost as much
+  // as it saved.
   for (int y = area.y0; y < area.y1; ++y) {
     const size_t rowStart = static_cast<size_t>(y) * static_cast<size_t>(memory.stride) + static_cast<size_t>(lo);
-    for (const size_t at : {rowStart, rowStart + static_cast<size_t>(width) - 1}) {
-      __builtin_prefetch(memory.term + at);
-      __builtin_prefetch(memory.depth + at, 1);
-      __builtin_prefetch(memory.value + at, 1);
-    }
+    __builtin_prefetch(memory.term + rowStart);
+    __builtin_prefetch(memory.depth + rowStart, 1);
+    __builtin_prefetch(memory.value + rowStart, 1);
   }
   // Pixels written, counted per lane and added up once.
   alignas(32) uint32_t won[kLanes] = {};
