@@ -1,0 +1,78 @@
+// Contact cut-outs on pixels (thesis 3.2, figure 3.5): a box on a floor, seen at its base. Floor
+// elements that run under the box are lit only on their open part but shown whole: beside the
+// box the floor goes dark too early (or bright, where the open part sees more than it should).
+// With the box's footprint cut out of the floor, the floor's elements end at the box, and the
+// picture comes much closer to a finely meshed solution.
+#include "app/gl/headless_render.h"
+#include "engine/display_mesh.h"
+#include "engine/lighting.h"
+#include "engine/meshed_scene.h"
+#include "engine/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace app {
+namespace {
+
+// A 4 x 3 m room, 2.5 m high, lit by a ceiling panel, with a box whose footprint lies across the
+// floor's 0.5 m grid, standing `lift` above the floor (0: on it, and cut out of it).
+engine::Scene boxScene(double lift, double patch) {
+  const std::string json = R"({ "format": "walkrad-scene/1", "settings": { "patch_size": )" + std::to_string(patch) + R"( },
+    "materials": { "white": { "reflectance": [0.6, 0.6, 0.6] },
+                   "lamp": { "reflectance": [0.5, 0.5, 0.5], "emission": [8, 8, 8] } },
+    "objects": [
+      { "name": "room", "movable": false,
+        "solids": [ { "profile": [[0, 0], [4, 0], [4, 3], [0, 3]], "from": 0, "to": 2.5, "inward": true, "material": "white",
+                      "faces": { "top": { "holes": [ { "polygon": [[1.5, 1], [2.5, 1], [2.5, 2], [1.5, 2]], "fill": "lamp" } ] } } } ] },
+      { "name": "box",
+        "solids": [ { "profile": [[1.2, 1.3], [2.1, 1.3], [2.1, 2.2], [1.2, 2.2]], "from": )" + std::to_string(lift) +
+                           R"(, "to": 0.8, "material": "white" } ] } ],
+    "cameras": { "default": { "position": [2.6, 1.2, 0.2], "look_at": [1.65, 0.1, 1.6], "fov_y": 55 } } })";
+  return engine::parseScene(json, "box-on-floor.json");
+}
+
+ImageRgbF solvedImage(const engine::Scene& scene) {
+  const engine::MeshedScene meshed = engine::meshScene(scene);
+  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  radiosity::SolverSettings settings;
+  settings.graphicsProcessors = 2;
+  radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
+  engine::solveTo(solver, 0.01, UINT64_MAX);
+  engine::displayRadiance(solver, mesh.radiance);
+  ViewCamera camera;
+  chooseCamera(scene, "", camera);
+  return renderHeadless(scene, mesh, camera, 160, 120, 1, false, true).linear;
+}
+
+// Mean absolute difference over the image, relative to the reference's mean: the view holds the
+// box and the floor around it, both meshed alike but for the footprint.
+double floorError(const ImageRgbF& image, const ImageRgbF& reference) {
+  double difference = 0, level = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int k = 0; k < 3; ++k) {
+        const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x)) * 3 + static_cast<size_t>(k);
+        difference += std::abs(image.pixels[i] - reference.pixels[i]);
+        level += reference.pixels[i];
+      }
+  return difference / level;
+}
+
+TEST(ContactCutout, TheFloorBesideABoxIsCloserToAFineSolution) {
+  const engine::Scene standing = boxScene(0, 0.5), hovering = boxScene(0.002, 0.5);
+  ASSERT_EQ(standing.surfaces.size(), hovering.surfaces.size());
+  const ImageRgbF reference = solvedImage(boxScene(0, 0.2));
+  const double cut = floorError(solvedImage(standing), reference);
+  const double uncut = floorError(solvedImage(hovering), reference);
+  std::printf("floor in front of the box, mean error against patch 0.2: cut out %.2f%%, not cut %.2f%%\n", 100 * cut,
+              100 * uncut);
+  // Measured: 4.2% against 7.1% (the rest of the error is the coarse mesh's, the same in both).
+  EXPECT_LT(cut, 0.7 * uncut);
+}
+
+}  // namespace
+}  // namespace app
