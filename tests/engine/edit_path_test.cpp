@@ -1,0 +1,80 @@
+// The edit path's contract on real scenes: a move changes only the surfaces whose light it
+// changes, and moving an object and moving it back gives the solution of the unmoved scene.
+#include "engine/lighting.h"
+#include "engine/meshed_scene.h"
+#include "engine/scene_editor.h"
+#include "engine/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace engine {
+namespace {
+
+SceneEditor editorFor(const std::string& asset) {
+  Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/" + asset);
+  MeshedScene meshed = meshScene(scene);
+  return SceneEditor(std::move(scene), std::move(meshed));
+}
+
+// Moving the office's chair across the floor touches the chair and the floor it stands on,
+// nothing else: every other surface keeps its elements and vertices.
+TEST(EditPath, AMoveChangesOnlyTheObjectAndWhatItStandsOn) {
+  SceneEditor editor = editorFor("office.json");
+  const MeshedScene before = editor.meshed();
+  const uint32_t chair = *editor.findObject("chair");
+  ObjectPose pose = poseOf(editor.scene().objects[chair]);
+  pose.position += Vec3{0.3, 0, -0.2};
+  editor.setPose(chair, pose);
+  std::set<std::string> changed;
+  for (uint32_t s = 0; s < before.surfaces.size(); ++s) {
+    const bool same = editor.meshed().surfaces[s].mesh.elements == before.surfaces[s].mesh.elements &&
+                      editor.meshed().surfaces[s].positions == before.surfaces[s].positions;
+    const Surface& surface = editor.scene().surfaces[s];
+    if (!same) changed.insert(editor.scene().objects[surface.object].name + (surface.object == chair ? "" : " " + surface.face));
+  }
+  EXPECT_EQ(changed, (std::set<std::string>{"chair", "room bottom"}));
+  for (uint32_t s : editor.remeshed()) EXPECT_EQ(editor.scene().surfaces[s].face, "bottom");
+}
+
+// Mean absolute difference of two solutions' element radiance, over the mean, on the surfaces
+// meshed alike in both (all of them, when `sameMeshes`).
+double relativeDifference(const radiosity::Solver& a, const radiosity::Solver& b, bool sameMeshes) {
+  double difference = 0, level = 0;
+  for (uint32_t s = 0; s < a.surfaceCount(); ++s) {
+    const auto ra = a.elementRadiance(s), rb = b.elementRadiance(s);
+    if (sameMeshes) EXPECT_EQ(ra.size(), rb.size());
+    if (ra.size() != rb.size()) continue;
+    for (size_t e = 0; e < ra.size(); ++e)
+      for (int c = 0; c < 3; ++c) difference += std::abs(ra[e][c] - rb[e][c]), level += std::abs(rb[e][c]);
+  }
+  return difference / level;
+}
+
+// The Cornell box's short block moved away and back: the light converges to what it was (within
+// 0.5%, the bound).
+TEST(EditPath, MovingAnObjectAndBackRestoresTheSolution) {
+  SceneEditor editor = editorFor("cornell.json");
+  radiosity::SolverSettings settings;
+  settings.graphicsProcessors = 2;
+  const auto input = radiosityInput(editor.scene(), editor.meshed());
+  radiosity::Solver unmoved(input, settings);
+  unmoved.solve(0.01);
+  auto solver = std::make_unique<radiosity::Solver>(input, settings);
+  solver->solve(0.01);
+  const uint32_t block = *editor.findObject("short block");
+  const ObjectPose home = poseOf(editor.scene().objects[block]);
+  editor.setPose(block, {home.position + Vec3{120, 0, 100}, home.rotateYDeg + 30});
+  applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
+  solver->solve(0.01);
+  const double moved = relativeDifference(*solver, unmoved, false);
+  editor.setPose(block, home);
+  applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
+  solver->solve(0.01);
+  EXPECT_GT(moved, 0.01);  // the move itself changed the light
+  EXPECT_LT(relativeDifference(*solver, unmoved, true), 0.005);
+}
+
+}  // namespace
+}  // namespace engine
