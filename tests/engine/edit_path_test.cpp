@@ -44,7 +44,9 @@ double relativeDifference(const radiosity::Solver& a, const radiosity::Solver& b
   double difference = 0, level = 0;
   for (uint32_t s = 0; s < a.surfaceCount(); ++s) {
     const auto ra = a.elementRadiance(s), rb = b.elementRadiance(s);
-    if (sameMeshes) EXPECT_EQ(ra.size(), rb.size());
+    if (sameMeshes) {
+      EXPECT_EQ(ra.size(), rb.size());
+    }
     if (ra.size() != rb.size()) continue;
     for (size_t e = 0; e < ra.size(); ++e)
       for (int c = 0; c < 3; ++c) difference += std::abs(ra[e][c] - rb[e][c]), level += std::abs(rb[e][c]);
