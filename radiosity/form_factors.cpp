@@ -145,15 +145,35 @@ double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const 
   return sum * r.area / std::numbers::pi;
 }
 
-void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
-                   double farRatio, double ratio, int splits, double& front, double& back) {
-  const glm::dvec3 centre = polygonCentroid(piece);
-  areaToPolygon(piece, centre, pieceRadius(piece, centre), weight, normal, r, farRatio, ratio, splits, front, back);
+double distanceToReceiver(const glm::dvec3& point, const Receiver& r, double enough) {
+  const double sphere = glm::length(point - r.centre) - r.radius;
+  if (sphere >= enough) return sphere;
+  // The point's foot on the plane, if inside the polygon, else the nearest point of an edge.
+  const double height = glm::dot(r.normal, point) - r.offset;
+  const glm::dvec3 foot = point - height * r.normal;
+  const Polygon3& p = r.polygon;
+  double edge2 = INFINITY;
+  bool left = true, right = true;  // of every edge: inside, for either winding
+  for (int k = 0; k < p.n; ++k) {
+    const glm::dvec3 a = p.v[k], ab = p.v[(k + 1) % p.n] - a;
+    const double side = glm::dot(glm::cross(ab, foot - a), r.normal);
+    left = left && side >= 0;
+    right = right && side <= 0;
+    const double t = std::clamp(glm::dot(point - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+    const glm::dvec3 d = point - (a + t * ab);
+    edge2 = std::min(edge2, glm::dot(d, d));
+  }
+  return left || right ? std::abs(height) : std::sqrt(edge2);
 }
 
-void areaToPolygon(const Polygon3& piece, const glm::dvec3& centre, double size, double weight, const glm::dvec3& normal,
-                   const Receiver& r, double farRatio, double ratio, int splits, double& front, double& back) {
-  const double distance = glm::length(centre - r.centre) - r.radius;
+namespace {
+
+// areaToPolygon for a piece whose centroid and radius are known, and its Gauss rule when `rule`
+// is not null.
+void integrate(const Polygon3& piece, const glm::dvec3& centre, double size, const Quadrature* rule, double weight,
+               const glm::dvec3& normal, const Receiver& r, double farRatio, double ratio, int splits, double& front,
+               double& back) {
+  const double distance = distanceToReceiver(centre, r, size * farRatio);
   if (size * farRatio <= distance) {
     // Far for its size: its centre stands for it, as a whole shooter's does for far receivers.
     const double f = weight * pointToReceiver(centre, normal, r);
@@ -163,10 +183,10 @@ void areaToPolygon(const Polygon3& piece, const glm::dvec3& centre, double size,
   if (splits <= 0 || size * ratio <= distance) {
     // A piece small for its distance: its Gauss rule, whose error falls as the fourth power of
     // the piece's size where the midpoint rule's falls as the square.
-    const Quadrature rule = gaussRule(piece);
-    for (int k = 0; k < rule.n; ++k) {
-      const double f = weight * rule.weight[k] * pointToReceiver(rule.point[k], normal, r);
-      (glm::dot(r.normal, rule.point[k]) > r.offset ? front : back) += f;
+    const Quadrature own = rule ? *rule : gaussRule(piece);
+    for (int k = 0; k < own.n; ++k) {
+      const double f = weight * own.weight[k] * pointToReceiver(own.point[k], normal, r);
+      (glm::dot(r.normal, own.point[k]) > r.offset ? front : back) += f;
     }
     return;
   }
@@ -175,6 +195,21 @@ void areaToPolygon(const Polygon3& piece, const glm::dvec3& centre, double size,
   const double area = polygonArea(piece);
   for (int k = 0; k < count; ++k)
     areaToPolygon(parts[k], weight * polygonArea(parts[k]) / area, normal, r, farRatio, ratio, splits - 1, front, back);
+}
+
+}  // namespace
+
+void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
+                   double farRatio, double ratio, int splits, double& front, double& back) {
+  const glm::dvec3 centre = polygonCentroid(piece);
+  integrate(piece, centre, pieceRadius(piece, centre), nullptr, weight, normal, r, farRatio, ratio, splits, front,
+            back);
+}
+
+void areaToPolygon(const Receiver& piece, double weight, const glm::dvec3& normal, const Receiver& r, double farRatio,
+                   double ratio, int splits, double& front, double& back) {
+  integrate(piece.polygon, piece.centre, piece.radius, &piece.rule, weight, normal, r, farRatio, ratio, splits, front,
+            back);
 }
 
 }  // namespace radiosity

@@ -59,17 +59,22 @@ constexpr double kGaussReceiverRatio = 4;
 // by r's Gauss rule where kGaussReceiverRatio allows, else pointToPolygon.
 double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
 
+// The distance from `point` to r's polygon, or at least `enough` when it is that far: the
+// distance to r's bounding sphere answers when that is at least `enough`.
+double distanceToReceiver(const glm::dvec3& point, const Receiver& r, double enough);
+
 // Adds to front/back weight x the form factor from `piece` (a part of the shooter, whose
-// normal is `normal`) to `r`, averaged over the piece. A piece farther from r's bounding sphere
-// than `farRatio` times its radius counts by its centre alone. Otherwise `piece` is split into four (edge
-// midpoints) while its radius exceeds its distance to r's bounding sphere over `ratio` and
-// `splits` allows, then each piece is integrated by a Gauss rule (4 points on a quad, 3 on a
-// triangle). A point behind r's plane sees r's back: its share goes to `back`. `weight` is the
-// piece's share of the shooter's area.
+// normal is `normal`) to `r`, averaged over the piece. A piece whose centre is farther from r's
+// polygon than `farRatio` times its radius counts by its centre alone. Otherwise `piece` is split
+// into four (edge midpoints) while its radius exceeds that distance over `ratio` and `splits`
+// allows, then each piece is integrated by its Gauss rule (the factor from a point varies on
+// the scale of its distance to the polygon, not to the polygon's centre). A point behind r's
+// plane sees r's back: its share goes to `back`. `weight` is the piece's share of the shooter's
+// area.
 void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& normal, const Receiver& r,
                    double farRatio, double ratio, int splits, double& front, double& back);
-// The same for a piece whose centroid and radius (about the centroid) the caller knows.
-void areaToPolygon(const Polygon3& piece, const glm::dvec3& centre, double radius, double weight, const glm::dvec3& normal,
-                   const Receiver& r, double farRatio, double ratio, int splits, double& front, double& back);
+// The same for a whole element, whose centroid, radius and Gauss rule are at hand.
+void areaToPolygon(const Receiver& piece, double weight, const glm::dvec3& normal, const Receiver& r, double farRatio,
+                   double ratio, int splits, double& front, double& back);
 
 }  // namespace radiosity

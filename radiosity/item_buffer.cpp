@@ -22,12 +22,12 @@ double itemBufferVisibility(const pxpl5::HemisphereFrame& frame, const Hemispher
   int visible = 0, considered = 0;
   for (const glm::dvec3& target : targets) {
     const glm::dvec3 d = target - eye;
-    const double length = glm::length(d);
-    if (length <= 0 || glm::dot(d, axes.z) <= 0) continue;  // on or below the horizon
-    // Pixel (i, j) looks along x = (i + 0.5) * 2 / resolution - 1: the nearest centre to x.
-    const double x = glm::dot(d, axes.x) / length, y = glm::dot(d, axes.y) / length;
-    const int i = static_cast<int>(std::floor((x + 1) * 0.5 * resolution));
-    const int j = static_cast<int>(std::floor((y + 1) * 0.5 * resolution));
+    if (glm::dot(d, axes.z) <= 0) continue;  // on or below the horizon
+    // Pixel (i, j) looks along x = (i + 0.5) * 2 / resolution - 1: the nearest centre to x, as
+    // floor((x + 1) * resolution / 2); x + 1 >= 0, so the conversion truncates it the same.
+    const double scale = 0.5 * resolution / std::sqrt(glm::dot(d, d));
+    const int i = static_cast<int>(glm::dot(d, axes.x) * scale + 0.5 * resolution);
+    const int j = static_cast<int>(glm::dot(d, axes.y) * scale + 0.5 * resolution);
     if (i < 0 || j < 0 || i >= resolution || j >= frame.height) continue;
     ++considered;
     const uint32_t seen = frame.items[static_cast<size_t>(j) * frame.stride + i];

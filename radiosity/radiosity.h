@@ -13,7 +13,8 @@
 // the displayed radiance; shooting patches are groups of elements of one surface that shoot
 // their unshot light together from one hemisphere frame. Which elements form a patch is decided
 // outside (groupIntoPatches below, or the quadtree's parents); by default every element is its
-// own patch.
+// own patch. The solver splits a patch whose centre turns out to be inside a solid (see
+// solver.cpp), so the patch count can grow while solving.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -56,9 +57,11 @@ struct SolverSettings {
   // taken from its centre. The point approximation's error falls as (radius / distance)^2: about
   // 20% for two unit squares a unit apart (1.4 radii), about 1% at 6 radii.
   double nearFieldRatio = 8;
-  // In that integral the shooter's elements are split in four while a piece's radius exceeds
-  // its distance to the receiver over `pieceRatio`, at most `maxShooterSplits` times, and each
-  // piece is integrated by a Gauss rule (error falling as the fourth power of its size).
+  // In that integral clusters of the shooter's elements farther from the receiver than
+  // `pieceRatio` times their radius count by four points; closer ones by their parts, down to
+  // the elements, which are split in four while a piece's radius exceeds its distance to the
+  // receiver over `pieceRatio`, at most `maxShooterSplits` times, and each piece is integrated
+  // by a Gauss rule (error falling as the fourth power of its size).
   double pieceRatio = 3;
   int maxShooterSplits = 3;
   // Receivers whose form factor is below this many hemisphere pixels are too small for the item
@@ -72,7 +75,9 @@ struct Stats {
   uint64_t frames = 0;             // hemisphere frames rendered
   uint64_t nearReceivers = 0;      // receiver factors integrated over the shooter's area
   uint64_t smallReceivers = 0;     // receiver factors computed analytically for their size
-  uint64_t movedShooters = 0;      // patches whose centre was inside a solid (see solver.cpp)
+  uint64_t splitPatches = 0;       // patches of several elements whose centre was inside a solid,
+                                   // split in parts (see solver.cpp)
+  uint64_t movedShooters = 0;      // one-element patches whose centre was inside a solid
   uint64_t renormalisedShots = 0;  // shots whose corrections were too big for the rest to absorb
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area
@@ -108,10 +113,11 @@ class Solver {
   // nothing when no patch has any.
   std::optional<Shooter> nextShooter() const;
 
-  // Shoots nextShooter()'s unshot light: a hemisphere frame at the patch's centre over every
-  // element, near and small receivers corrected (see solver.cpp), and the reflected part
-  // deposited as radiance on each receiver and as unshot light on its patch. Returns false and
-  // does nothing when there is nothing left to shoot. Throws only what runs out (memory,
+  // Shoots nextShooter()'s unshot light (when that patch is split on its first shot, the next
+  // shooter after the split's): a hemisphere frame at the patch's centre over every element,
+  // near and small receivers corrected (see solver.cpp), and the reflected part deposited as
+  // radiance on each receiver and as unshot light on its patch. Returns false and does nothing
+  // when there is nothing left to shoot. Throws only what runs out (memory,
   // threads); the solver is then half-way through a shot and must be thrown away.
   bool step();
 

@@ -7,9 +7,9 @@
 // factors:
 //  - Near receivers (closer than nearFieldRatio x p's radius): the centre's factor is off by
 //    about (radius / distance)^2, 20% for two unit squares a unit apart. Their factor is
-//    integrated over p's area (form_factors.h: p's elements split until each piece is small
-//    for its distance, Lambert's formula from each piece's centre), times their visibility from
-//    the centre's frame.
+//    integrated over p's area (near_field.h: clusters of p's elements far for their size count
+//    by a few points, elements close by are split until each piece is small for its distance),
+//    times their visibility from the centre's frame.
 //  - Small receivers (factor under smallReceiverPixels pixels): a pixel is either wholly theirs
 //    or not, so their count is off by up to a pixel, which for a tiny element is all of it. Their
 //    factor is the analytic one from the centre (form_factors.h: Lambert's formula, or the
@@ -30,6 +30,7 @@
 #include "radiosity/ambient.h"
 #include "radiosity/form_factors.h"
 #include "radiosity/item_buffer.h"
+#include "radiosity/near_field.h"
 
 #include "pxpl5/hemisphere.h"
 
@@ -87,12 +88,17 @@ struct Solver::State {
   std::vector<glm::dvec3> elementUnshot;  // per element; its patch's unshot is their area-weighted mean
   std::vector<double> radius, area, offset;
   std::vector<uint32_t> surfaceOf, patchOf;
+  // kTargets per element where the item buffer is read for its visibility: its centroid, then
+  // the points a quarter of the way in from its corners.
+  static constexpr size_t kTargets = 5;
+  std::vector<glm::dvec3> targets;
 
-  // Per patch; its elements are patchElements[patchFirst[p], patchFirst[p + 1]).
-  std::vector<uint32_t> patchFirst, patchElements, patchSurface;
+  // Per patch; its elements are patchElements[patchFirst[p], patchLast[p]).
+  std::vector<uint32_t> patchElements, patchFirst, patchLast, patchSurface;
   std::vector<glm::dvec3> patchCentre, unshot, shot;
   std::vector<double> patchArea, patchRadius;
   std::vector<uint8_t> pointChosen;  // patchCentre[p] checked for seeing fronts (see choosePoint)
+  std::vector<PatchTree> trees;      // over each patch's elements, in patchElements' order
 
   std::vector<glm::vec3> soupVertices;
   std::vector<pxpl5::Polygon> soupPolygons;
@@ -105,12 +111,12 @@ struct Solver::State {
     glm::dvec3 front, back;  // per channel
   };
   std::vector<glm::dvec3> shares;
+  std::vector<NodeLight> nodeLight;
   // The receivers of a shot are judged in a fixed number of chunks, whatever the number of
   // graphics processors, and added up in chunk order: the same sums with any thread count.
   static constexpr size_t kReceiverChunks = 16;
   struct ReceiverChunk {
     std::vector<NewFactor> factors;
-    std::vector<glm::dvec3> targets;  // visibility's scratch
     double replacedPixels = 0;
     glm::dvec3 replacedNew{0};
     uint64_t near = 0, small = 0;
@@ -126,18 +132,23 @@ struct Solver::State {
 
   void build(std::span<const Surface> input);
   double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye, uint32_t j,
-                    double unoccluded, std::vector<glm::dvec3>& targets) const;
+                    double unoccluded) const;
   // New factors for the near and small receivers among elements [begin, end) of shooter p's
   // frame (see shoot).
   void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
                       uint32_t end, ReceiverChunk& out);
   double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
-  std::span<const uint32_t> elementsOf(uint32_t p) const {
-    return {patchElements.data() + patchFirst[p], patchFirst[p + 1] - patchFirst[p]};
+  std::span<uint32_t> elementsOf(uint32_t p) {
+    return {patchElements.data() + patchFirst[p], patchLast[p] - patchFirst[p]};
   }
+  std::span<const uint32_t> elementsOf(uint32_t p) const {
+    return {patchElements.data() + patchFirst[p], patchLast[p] - patchFirst[p]};
+  }
+  void setUpPatch(uint32_t p, uint32_t first, uint32_t last);
   const pxpl5::HemisphereFrame& frameFrom(uint32_t p, const glm::dvec3& point);
   const pxpl5::HemisphereFrame* choosePoint(uint32_t p);
-  void shoot(uint32_t p);
+  void split(uint32_t p);
+  void shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen);
 };
 
 // ---- setup -----------------------------------------------------------------------------------
@@ -178,6 +189,8 @@ void Solver::State::build(std::span<const Surface> input) {
       if (!(r.area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
       const uint32_t j = static_cast<uint32_t>(receiver.size() - 1);
       centre.push_back(r.centre);
+      targets.push_back(r.centre);
+      for (int k = 0; k < 4; ++k) targets.push_back(p.v[k % p.n] + 0.25 * (r.centre - p.v[k % p.n]));
       normal.push_back(s.normal);
       offset.push_back(r.offset);
       radius.push_back(r.radius);
@@ -196,61 +209,74 @@ void Solver::State::build(std::span<const Surface> input) {
     s.patchCount = patches;
   }
 
-  // Patches: area, the centre they shoot from, their radius; unshot light starts as emission.
-  const size_t patchTotal = members.size();
-  patchFirst.assign(1, 0);
-  for (size_t p = 0; p < patchTotal; ++p) {
-    if (members[p].empty()) throw std::invalid_argument("radiosity::Solver: patch " + std::to_string(p) + " has no elements");
+  for (size_t p = 0; p < members.size(); ++p) {
+    if (members[p].empty())
+      throw std::invalid_argument("radiosity::Solver: patch " + std::to_string(p) + " has no elements");
+    const auto first = static_cast<uint32_t>(patchElements.size());
     patchElements.insert(patchElements.end(), members[p].begin(), members[p].end());
-    patchFirst.push_back(static_cast<uint32_t>(patchElements.size()));
-    const uint32_t si = surfaceOf[members[p].front()];
-    double a = 0;
-    glm::dvec3 c{0};
-    for (uint32_t e : members[p]) a += area[e], c += area[e] * centre[e];
-    c /= a;
-    // A patch bent around a hole may have its centroid outside itself: shoot from its element
-    // nearest the centroid instead.
-    bool inside = false;
-    for (uint32_t e : members[p]) inside = inside || insideConvex(receiver[e].polygon, normal[e], c);
-    if (!inside) {
-      uint32_t nearest = members[p].front();
-      for (uint32_t e : members[p])
-        if (glm::length(centre[e] - c) < glm::length(centre[nearest] - c)) nearest = e;
-      c = centre[nearest];
-    }
-    double r = 0;
-    for (uint32_t e : members[p])
-      for (int k = 0; k < receiver[e].polygon.n; ++k) r = std::max(r, glm::length(receiver[e].polygon.v[k] - c));
-    patchSurface.push_back(si);
-    patchArea.push_back(a);
-    patchCentre.push_back(c);
-    patchRadius.push_back(r);
-    unshot.push_back(surfaces[si].emission);
-    shot.emplace_back(0.0);
-    stats.emittedPower += kPi * surfaces[si].emission * a;
+    setUpPatch(static_cast<uint32_t>(p), first, static_cast<uint32_t>(patchElements.size()));
+    stats.emittedPower += kPi * surfaces[patchSurface[p]].emission * patchArea[p];
   }
-
-  pointChosen.assign(patchTotal, 0);
   pixelFactor.assign(receiver.size(), 0.0);
   replaced.assign(receiver.size(), 0);
+}
+
+// Makes patch p (a new one when p is the patch count) of patchElements[first, last): its area,
+// the centre it shoots from, its radius, its tree, its unshot light (its elements' area-weighted
+// mean).
+void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
+  if (p == unshot.size()) {
+    for (auto* v : {&patchFirst, &patchLast, &patchSurface}) v->emplace_back();
+    for (auto* v : {&patchCentre, &unshot, &shot}) v->emplace_back(0.0);
+    for (auto* v : {&patchArea, &patchRadius}) v->emplace_back();
+    pointChosen.emplace_back();
+    trees.emplace_back();
+  }
+  patchFirst[p] = first;
+  patchLast[p] = last;
+  const std::span<uint32_t> own = elementsOf(p);
+  double a = 0;
+  glm::dvec3 c{0}, light{0};
+  for (uint32_t e : own) a += area[e], c += area[e] * centre[e], light += area[e] * elementUnshot[e];
+  c /= a;
+  // A patch bent around a hole may have its centroid outside itself: shoot from its element
+  // nearest the centroid instead.
+  bool inside = false;
+  for (uint32_t e : own) inside = inside || insideConvex(receiver[e].polygon, normal[e], c);
+  if (!inside) {
+    uint32_t nearest = own.front();
+    for (uint32_t e : own)
+      if (glm::length(centre[e] - c) < glm::length(centre[nearest] - c)) nearest = e;
+    c = centre[nearest];
+  }
+  double r = 0;
+  for (uint32_t e : own)
+    for (int k = 0; k < receiver[e].polygon.n; ++k) r = std::max(r, glm::length(receiver[e].polygon.v[k] - c));
+  for (uint32_t e : own) patchOf[e] = p;
+  patchSurface[p] = surfaceOf[own.front()];
+  patchArea[p] = a;
+  patchCentre[p] = c;
+  patchRadius[p] = r;
+  unshot[p] = light / a;
+  pointChosen[p] = 0;
+  const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
+  trees[p] = buildPatchTree(own, receiver, axes.x, axes.y);
 }
 
 // ---- receivers of one shot ---------------------------------------------------------------------
 
 // Visibility of element j from the frame's centre, where j's unoccluded factor from there is
 // `unoccluded`: the pixel count over that where j is big enough to own pixels, else the item
-// buffer at its centroid and at points a quarter of the way in from each corner.
+// buffer at its targets.
 double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
-                                 uint32_t j, double unoccluded, std::vector<glm::dvec3>& targets) const {
+                                 uint32_t j, double unoccluded) const {
   if (unoccluded >= settings.smallReceiverPixels * pixelShare) {
     const double ratio = pixelFactor[j] / unoccluded;
     return ratio >= kUnoccludedRatio ? 1.0 : ratio;
   }
-  targets.clear();
-  targets.push_back(centre[j]);
-  const Polygon3& corners = receiver[j].polygon;
-  for (int k = 0; k < corners.n; ++k) targets.push_back(corners.v[k] + 0.25 * (centre[j] - corners.v[k]));
-  return itemBufferVisibility(frame, axes, eye, targets, j, {normal, offset, surfaceOf});
+  // A receiver smaller than a pixel would read the pixel of its centroid at the other points too.
+  const size_t count = unoccluded < pixelShare ? 1 : 1 + static_cast<size_t>(receiver[j].polygon.n);
+  return itemBufferVisibility(frame, axes, eye, {targets.data() + kTargets * j, count}, j, {normal, offset, surfaceOf});
 }
 
 double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const {
@@ -262,37 +288,54 @@ double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::
 
 // Surfaces are one-sided and a solid's faces face out, so a point that sees mostly backs of
 // faces is inside a solid: the part of a floor element or patch under a box standing on it.
-// That part is dark (nothing reaches it) while the element's light came in on its open part, so
-// shooting from inside would hand all of it to backs. The first time a patch shoots, a centre
-// that sees more than a quarter backs is replaced by the element centre, or the point a third
-// of the way in from an element corner, that sees the fewest; the geometry does not change, so
-// the choice is kept. Returns the frame from the centre when it is kept (the shot's own frame),
-// else null.
+// That part is dark (nothing reaches it) while the light came in on the open part, so shooting
+// from inside would hand all of it to backs. The first time a patch is to shoot, its centre is
+// checked. A patch of several elements whose centre sees more than a quarter backs (it is partly
+// under a box) has no one point that sees what all of it does: it is split, and its parts are
+// checked when they are to shoot. A single element's centre is replaced by the point a third of
+// the way in from one of its corners that sees the fewest backs. The geometry does not change,
+// so the choice is kept. Returns the frame from the centre when it is kept (the shot's own
+// frame), else null; pointChosen[p] is not set when p was split.
 const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
-  pointChosen[p] = 1;
-  const std::span<const uint32_t> own = elementsOf(p);
-  const auto backFrom = [&](const glm::dvec3& point) { return backShare(frameFrom(p, point), point); };
   const pxpl5::HemisphereFrame& centreFrame = frameFrom(p, patchCentre[p]);
   double best = backShare(centreFrame, patchCentre[p]);
-  if (best <= 0.25) return &centreFrame;
+  if (best <= 0.25) {
+    pointChosen[p] = 1;
+    return &centreFrame;
+  }
+  if (elementsOf(p).size() > 1) {
+    split(p);
+    return nullptr;
+  }
+  pointChosen[p] = 1;
+  const uint32_t e = elementsOf(p).front();
+  const Polygon3& corners = receiver[e].polygon;
   glm::dvec3 bestPoint = patchCentre[p];
-  for (uint32_t e : own) {
-    const auto consider = [&](const glm::dvec3& q) {
-      const double b = backFrom(q);
-      if (b < best) best = b, bestPoint = q;
-    };
-    consider(centre[e]);
-    const Polygon3& corners = receiver[e].polygon;
-    if (own.size() == 1)
-      for (int k = 0; k < corners.n; ++k) consider(corners.v[k] + (centre[e] - corners.v[k]) / 3.0);
+  for (int k = 0; k < corners.n; ++k) {
+    const glm::dvec3 q = corners.v[k] + (centre[e] - corners.v[k]) / 3.0;
+    const double b = backShare(frameFrom(p, q), q);
+    if (b < best) best = b, bestPoint = q;
   }
   patchCentre[p] = bestPoint;
   double r = 0;
-  for (uint32_t e : own)
-    for (int k = 0; k < receiver[e].polygon.n; ++k) r = std::max(r, glm::length(receiver[e].polygon.v[k] - bestPoint));
+  for (int k = 0; k < corners.n; ++k) r = std::max(r, glm::length(corners.v[k] - bestPoint));
   patchRadius[p] = r;
   ++stats.movedShooters;
   return nullptr;
+}
+
+// The children of patch p's tree become patches: p the first, new patches the others.
+void Solver::State::split(uint32_t p) {
+  const PatchTree tree = std::move(trees[p]);
+  const uint32_t base = patchFirst[p];
+  const PatchTree::Node& root = tree.nodes.front();
+  const glm::dvec3 shotBefore = shot[p];
+  for (uint32_t c = root.child; c < root.child + root.children; ++c) {
+    const uint32_t q = c == root.child ? p : static_cast<uint32_t>(unshot.size());
+    setUpPatch(q, base + tree.nodes[c].first, base + tree.nodes[c].last);
+    shot[q] = shotBefore;
+  }
+  ++stats.splitPatches;
 }
 
 // Patch p's hemisphere frame from `point`: every element but the patch's own.
@@ -321,17 +364,18 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
     const double gap = glm::length(toward) - radius[j];
     NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
     if (gap < nearLimit) {
-      // Visibility first: a receiver the shooter's centre cannot see needs no integral.
-      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]), out.targets);
-      if (v > 0) {
-        for (size_t k = 0; k < own.size(); ++k) {
-          double front = 0, back = 0;
-          areaToPolygon(receiver[own[k]].polygon, centre[own[k]], radius[own[k]], 1.0, eyeNormal, receiver[j],
-                        settings.nearFieldRatio, settings.pieceRatio, settings.maxShooterSplits, front, back);
-          f.front += shares[k] * front;
-          f.back += shares[k] * back;
-        }
-        f.front *= v, f.back *= v;
+      // Visibility first: a receiver the shooter's centre cannot see needs no integral. But a
+      // centre behind j's plane sees at most j's back and tells nothing of what the patch's
+      // elements in front of the plane see: j's front, unless another object is in the way (j's
+      // own solid cannot be when it is convex). Without this a floor patch reaching around a box
+      // left the box's face 15% too dark.
+      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
+      const bool behind = glm::dot(normal[j], eye) <= offset[j];
+      if (v > 0 || behind) {
+        patchToReceiver(trees[p], nodeLight, own, receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
+                        settings.pieceRatio, settings.maxShooterSplits, f.front, f.back);
+        if (!behind) f.front *= v;
+        f.back *= v;
       }
       ++nearCount;
     } else {
@@ -339,7 +383,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
       const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
-      const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded, out.targets) : 0;
+      const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded) : 0;
       (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
       ++smallCount;
     }
@@ -354,8 +398,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
   out.small = smallCount;
 }
 
-void Solver::State::shoot(uint32_t p) {
-  const pxpl5::HemisphereFrame* chosen = pointChosen[p] ? nullptr : choosePoint(p);
+void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   const uint32_t si = patchSurface[p];
   const glm::dvec3 dB = unshot[p];
   const std::span<const uint32_t> own = elementsOf(p);
@@ -369,6 +412,7 @@ void Solver::State::shoot(uint32_t p) {
     shares.push_back(w);
     elementUnshot[e] = glm::dvec3(0);
   }
+  lightPatchTree(trees[p], shares, nodeLight);
   unshot[p] = glm::dvec3(0);
   shot[p] += dB;
   history.push_back({p, dB});
@@ -466,11 +510,19 @@ std::optional<Shooter> Solver::nextShooter() const {
 
 bool Solver::step() {
   const auto start = std::chrono::steady_clock::now();
-  const std::optional<Shooter> next = nextShooter();
-  if (!next) return false;
-  state_->shoot(next->patch);
-  ++state_->stats.shots;
-  state_->stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  State& s = *state_;
+  // A patch's first shot settles the point it shoots from; when that splits the patch, the
+  // shooter is chosen again.
+  std::optional<Shooter> next;
+  const pxpl5::HemisphereFrame* frame = nullptr;
+  do {
+    next = nextShooter();
+    if (!next) return false;
+    frame = s.pointChosen[next->patch] ? nullptr : s.choosePoint(next->patch);
+  } while (!s.pointChosen[next->patch]);
+  s.shoot(next->patch, frame);
+  ++s.stats.shots;
+  s.stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;
 }
 

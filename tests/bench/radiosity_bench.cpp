@@ -42,6 +42,8 @@ void radiosityToOnePercent(benchmark::State& state) {
   state.counters["frames"] = static_cast<double>(stats.frames);
   state.counters["near/shot"] = static_cast<double>(stats.nearReceivers) / static_cast<double>(stats.shots);
   state.counters["small/shot"] = static_cast<double>(stats.smallReceivers) / static_cast<double>(stats.shots);
+  state.counters["split"] = static_cast<double>(stats.splitPatches);
+  state.counters["renormalised"] = static_cast<double>(stats.renormalisedShots);
 }
 BENCHMARK(radiosityToOnePercent)->ArgsProduct({{0, 1, 2}, {1, 2}})->Unit(benchmark::kMillisecond)->Iterations(1);
 

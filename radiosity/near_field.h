@@ -1,0 +1,71 @@
+// The near field of a shooting patch: its elements grouped into a tree of ever smaller clusters,
+// so a receiver near the patch integrates over it by clusters where it is far for their size and
+// by elements only where it is close. Without the tree a patch of K elements costs every near
+// receiver K integrals, and patches large enough to take few shots cost more than they save.
+// Internal to radiosity/.
+#pragma once
+
+#include "radiosity/form_factors.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace radiosity {
+
+// One patch's tree. Nodes are in breadth-first order, the root first. Node n holds the elements
+// at positions [first, last) of the patch's element list; a node of one element is a leaf,
+// others have 2 to 4 children, nodes [child, child + children).
+struct PatchTree {
+  struct Node {
+    uint32_t first = 0, last = 0;
+    uint32_t child = 0, children = 0;
+    glm::dvec3 centre{0};  // area centroid
+    double radius = 0;     // of the sphere about centre that holds every corner
+  };
+  std::vector<Node> nodes;
+  // Per element (in the patch's order): its centroid in plane coordinates (origin + u x + v y) and
+  // its second moments of area about the centroid over its area (uu, uv, vv).
+  std::vector<glm::dvec2> plane;
+  std::vector<glm::dvec3> spread;
+  glm::dvec3 origin{0}, x{0}, y{0};
+};
+
+// Builds the tree over a patch's elements (indices into `receivers`, all in one plane with unit
+// axes x and y) and reorders `elements` so that each node's elements are contiguous. Clusters
+// split at their centroid into quadrants (in half along the plane's u axis when the quadrants
+// would not divide them).
+PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver> receivers, const glm::dvec3& x,
+                         const glm::dvec3& y);
+
+// A node's share of one shot: per channel the sum of its elements' shares of the patch's unshot
+// power, and points standing for it: its power-weighted centroid and four points that have the
+// power-weighted first and second moments of its area (the 2 x 2 Gauss points for a uniformly
+// lit rectangle), a quarter of the weight each. Per channel when the colour varies across the
+// node (sets 3), else channel 0's serve all three (sets 1).
+struct NodeLight {
+  glm::dvec3 weight{0};
+  int sets = 1;
+  std::array<glm::dvec3, 3> mean{};
+  std::array<std::array<glm::dvec3, 4>, 3> points{};
+};
+
+// Per node of `tree`, its light for elements whose per-channel shares (in the patch's element
+// order) are `shares`. `out` is resized to the tree's nodes.
+void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, std::vector<NodeLight>& out);
+
+// Adds to front/back (per channel) the form factor from the patch to `r`, unoccluded, weighted by
+// the shares: from the root down, a node that r's plane does not cut and that is farther from
+// r's bounding sphere than `farRatio` times its radius counts by its mean, one farther than
+// `ratio` times by its four points, others by their children; a leaf's element by areaToPolygon
+// with the same ratios and `splits`. `elements` are
+// the patch's, in tree order; `normal` is the patch's.
+void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
+                     std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
+                     double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back);
+
+}  // namespace radiosity
