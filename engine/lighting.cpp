@@ -23,7 +23,8 @@ uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
 
 void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<radiosity::Surface>& surfaces,
                const radiosity::SolverSettings& settings) {
-  solver = std::make_unique<radiosity::Solver>(surfaces, settings);
+  if (!solver) solver = std::make_unique<radiosity::Solver>(surfaces, settings);
+  else solver->edit(surfaces);
 }
 
 LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings)

@@ -28,10 +28,10 @@ void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& ou
 uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
                  const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress = {});
 
-// Takes a scene edit into a solution: `surfaces` (the same surfaces in the same order, with the
-// same meshes, some of them moved) replace the solver's. The one way edits reach the light, from
-// the window's lighting thread and from `walkrad render --move`. The light is shot again from
-// the emitters.
+// Takes a scene edit into a solution: `surfaces` (the same surfaces in the same order, some moved,
+// some meshed again) replace the solver's, whose light is corrected rather than shot again
+// (radiosity::Solver::edit). The one way edits reach the light, from the window's lighting
+// thread and from `walkrad render --move`.
 void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<radiosity::Surface>& surfaces,
                const radiosity::SolverSettings& settings);
 

@@ -79,11 +79,16 @@ struct Stats {
                                    // split in parts (see solver.cpp)
   uint64_t movedShooters = 0;      // one-element patches whose centre was inside a solid
   uint64_t renormalisedShots = 0;  // shots whose corrections were too big for the rest to absorb
+  uint64_t corrections = 0;        // patches whose light was taken back after an edit (Solver::edit)
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area
   glm::dvec3 absorbedPower{0};     // absorbed by the front of elements, (1 - rho) of what arrives
   glm::dvec3 backPower{0};         // arrived at the back of an element: one-sided, lost
   glm::dvec3 escapedPower{0};      // left the scene (hemisphere pixels that saw nothing)
+  // The light edits took out with the elements they removed (their unshot light and what the
+  // corrections took back from them, less the emission their successors start with), so that
+  // emitted = absorbed + back + escaped + unshot + removed at every step.
+  glm::dvec3 removedPower{0};
 };
 
 struct Shooter {
@@ -124,6 +129,9 @@ class Solver {
   // Unshot power over emitted power, summed over channels; 0 for a scene that emits nothing.
   double unshotFraction() const;
   bool converged(double fraction) const { return unshotFraction() <= fraction; }
+  // The unshot power per channel, signed (after an edit some light is negative), without the
+  // corrections still pending: the term of the power ledgers (Stats).
+  glm::dvec3 unshotPower() const;
 
   // Steps until converged(fraction) or `maxShots` shots in this call. Returns the shots taken.
   uint64_t solve(double fraction, uint64_t maxShots = UINT64_MAX);
@@ -144,6 +152,21 @@ class Solver {
   // looks at every patch).
   std::vector<glm::dvec3> vertexRadiance(uint32_t surface, const glm::dvec3& ambient) const;
 
+  // An edit of the scene (objects moved, surfaces meshed again): `surfaces`, as many as before
+  // and in the same order, replace the solver's. Elements that are still there (also on a
+  // remeshed surface, where their corners did not change) keep their light; new ones start from
+  // their emission. Nothing is restarted (after Chen 1990, "Incremental radiosity"): every patch
+  // that has shot and may see what changed has its light taken back along the old geometry's
+  // factors (negative light where it fell) and returned to its elements as unshot light, which
+  // shooting then sends along the new geometry's, so the difference is what moves. Take-backs
+  // come first in step(), the most powerful first; until done, the share of a patch's light
+  // that can reach the changed elements counts as unshot. Take-backs left from an earlier edit
+  // are done first (here). Throws std::invalid_argument for another number of surfaces, or as
+  // the constructor does.
+  void edit(std::span<const Surface> surfaces);
+  // Take-backs still pending after the last edit.
+  size_t pendingCorrections() const;
+
   const Stats& stats() const;
   std::span<const ShotRecord> shotHistory() const;
   size_t surfaceCount() const;
@@ -152,7 +175,11 @@ class Solver {
 
  private:
   struct State;
+  struct Edit;
+  // One take-back (edit()); false when none is pending.
+  bool correct();
   std::unique_ptr<State> state_;
+  std::unique_ptr<Edit> edit_;
 };
 
 }  // namespace radiosity

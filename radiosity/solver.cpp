@@ -38,6 +38,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -149,6 +150,14 @@ struct Solver::State {
   const pxpl5::HemisphereFrame* choosePoint(uint32_t p);
   void split(uint32_t p);
   void shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen);
+  // Sends radiance dB from patch p along this geometry's form factors, its elements weighted by
+  // `shares` (lit into its tree), from `chosen` or a new frame at its centre: deposit(j, front,
+  // back) per receiver (factors per channel); returns the share that escaped, per channel.
+  template <typename Deposit>
+  glm::dvec3 distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit);
+  // Radiance dB sent from `sourceArea` reaching element j with these factors: the reflected part
+  // into j's radiance, its unshot light and its patch's, the rest into the power ledgers.
+  void receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front, const glm::dvec3& back);
 };
 
 // ---- setup -----------------------------------------------------------------------------------
@@ -399,13 +408,11 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
 }
 
 void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
-  const uint32_t si = patchSurface[p];
   const glm::dvec3 dB = unshot[p];
-  const std::span<const uint32_t> own = elementsOf(p);
   // Each element's share of the patch's unshot power per channel: the near field sees the
   // patch's elements one by one, so a patch brighter at one end lights its near receivers so.
   shares.clear();
-  for (uint32_t e : own) {
+  for (uint32_t e : elementsOf(p)) {
     glm::dvec3 w = area[e] / patchArea[p] * glm::dvec3(1);
     for (int c = 0; c < 3; ++c)
       if (dB[c] != 0) w[c] = area[e] * elementUnshot[e][c] / (patchArea[p] * dB[c]);
@@ -416,7 +423,28 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   unshot[p] = glm::dvec3(0);
   shot[p] += dB;
   history.push_back({p, dB});
-  const glm::dvec3 power = kPi * dB * patchArea[p];
+  // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
+  const glm::dvec3 escaped = distribute(p, chosen, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
+    receive(j, patchArea[p], dB, front, back);
+  });
+  stats.escapedPower += kPi * dB * patchArea[p] * escaped;
+}
+
+void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front,
+                            const glm::dvec3& back) {
+  const glm::dvec3& rho = surfaces[surfaceOf[j]].reflectance;
+  const glm::dvec3 power = kPi * dB * sourceArea;
+  const glm::dvec3 gained = rho * dB * front * (sourceArea / area[j]);
+  radiance[j] += gained;
+  elementUnshot[j] += gained;
+  unshot[patchOf[j]] += gained * (area[j] / patchArea[patchOf[j]]);
+  stats.absorbedPower += (1.0 - rho) * power * front;
+  stats.backPower += power * back;
+}
+
+template <typename Deposit>
+glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit) {
+  const uint32_t si = patchSurface[p];
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
 
   const pxpl5::HemisphereFrame& frame = chosen ? *chosen : frameFrom(p, eye);
@@ -463,16 +491,6 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   for (ReceiverChunk& chunk : chunks)
     for (NewFactor& f : chunk.factors) f.front *= newScale, f.back *= newScale;
 
-  // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
-  const auto deposit = [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
-    const glm::dvec3& rho = surfaces[surfaceOf[j]].reflectance;
-    const glm::dvec3 gained = rho * dB * front * (patchArea[p] / area[j]);
-    radiance[j] += gained;
-    elementUnshot[j] += gained;
-    unshot[patchOf[j]] += gained * (area[j] / patchArea[patchOf[j]]);
-    stats.absorbedPower += (1.0 - rho) * power * front;
-    stats.backPower += power * back;
-  };
   for (const pxpl5::IdFactor& f : frame.factors) {
     if (replaced[f.id]) continue;
     const glm::dvec3 factor = f.factor * scale;
@@ -481,11 +499,11 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   }
   for (const ReceiverChunk& chunk : chunks)
     for (const NewFactor& f : chunk.factors) deposit(f.element, f.front, f.back);
-  stats.escapedPower += power * (sky * scale);
 
   for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = 0;
   for (const ReceiverChunk& chunk : chunks)
     for (const NewFactor& f : chunk.factors) replaced[f.element] = 0;
+  return sky * scale;
 }
 
 // ---- Solver --------------------------------------------------------------------------------------
@@ -496,6 +514,210 @@ Solver::Solver(std::span<const Surface> surfaces, const SolverSettings& settings
 }
 
 Solver::~Solver() = default;
+
+// ---- edits (after Chen 1990) ---------------------------------------------------------------------
+
+struct Solver::Edit {
+  std::unique_ptr<State> before;     // the geometry the light to take back was sent along
+  std::vector<uint32_t> elementNow;  // per element of `before`: its index now, or kNone
+  struct TakeBack {
+    uint32_t patch = 0;  // in `before`
+    double power = 0;    // the part of its shot power that can change course, summed over channels
+  };
+  std::vector<TakeBack> pending;  // least power first: taken from the back
+  double pendingPower = 0;
+  std::vector<uint32_t> elements, patches;  // scratch of one correction
+};
+
+namespace {
+
+std::array<double, 12> cornersKey(const Polygon3& polygon) {
+  std::array<double, 12> key{};
+  for (int k = 0; k < polygon.n; ++k) key[3 * k] = polygon.v[k].x, key[3 * k + 1] = polygon.v[k].y, key[3 * k + 2] = polygon.v[k].z;
+  return key;
+}
+
+}  // namespace
+
+void Solver::edit(std::span<const Surface> surfaces) {
+  while (correct()) {
+  }
+  State& old = *state_;
+  if (surfaces.size() != old.surfaces.size())
+    throw std::invalid_argument("radiosity::Solver::edit: " + std::to_string(surfaces.size()) + " surfaces for " +
+                                std::to_string(old.surfaces.size()));
+  auto now = std::make_unique<State>(old.settings);
+  State& n = *now;
+  n.build(surfaces);
+  n.stats = old.stats;  // the ledgers go on; emission does not change
+  n.history = old.history;
+  n.pixelShare = old.pixelShare;
+
+  // Elements map by their corners (a moved surface: one by one, in order): they keep their light.
+  auto edit = std::make_unique<Edit>();
+  edit->elementNow.assign(old.receiver.size(), kNone);
+  std::vector<uint8_t> changedBefore(old.receiver.size(), 0), mappedNow(n.receiver.size(), 0);
+  std::vector<uint32_t> changed[2];  // elements that moved or went (before), moved or came (now)
+  for (size_t si = 0; si < surfaces.size(); ++si) {
+    const State::SurfaceData &a = old.surfaces[si], &b = n.surfaces[si];
+    if (a.elementCount == b.elementCount && a.corners == b.corners) {
+      for (uint32_t k = 0; k < a.elementCount; ++k) edit->elementNow[a.firstElement + k] = b.firstElement + k;
+    } else {
+      std::map<std::array<double, 12>, uint32_t> byCorners;
+      for (uint32_t k = 0; k < a.elementCount; ++k) byCorners[cornersKey(old.receiver[a.firstElement + k].polygon)] = a.firstElement + k;
+      for (uint32_t k = 0; k < b.elementCount; ++k)
+        if (const auto found = byCorners.find(cornersKey(n.receiver[b.firstElement + k].polygon)); found != byCorners.end())
+          edit->elementNow[found->second] = b.firstElement + k;
+    }
+  }
+  for (uint32_t j = 0; j < old.receiver.size(); ++j) {
+    const uint32_t i = edit->elementNow[j];
+    if (i == kNone) {
+      // Gone: its unshot light leaves with it.
+      n.stats.removedPower += kPi * old.elementUnshot[j] * old.area[j];
+      changedBefore[j] = 1;
+      changed[0].push_back(j);
+      continue;
+    }
+    mappedNow[i] = 1;
+    n.radiance[i] = old.radiance[j];
+    n.elementUnshot[i] = old.elementUnshot[j];
+    if (cornersKey(old.receiver[j].polygon) != cornersKey(n.receiver[i].polygon)) {
+      changedBefore[j] = 1;
+      changed[0].push_back(j);
+      changed[1].push_back(i);
+    }
+  }
+  for (uint32_t i = 0; i < n.receiver.size(); ++i)
+    if (!mappedNow[i]) {
+      n.stats.removedPower -= kPi * n.elementUnshot[i] * n.area[i];  // starts at its emission
+      changed[1].push_back(i);
+    }
+
+  // The light of patch p that can change course is what reaches the changed elements, before or
+  // after: at most their form factors from p's centre, each bounded by area / (pi d^2) (all of
+  // it nearer than their size). A patch that moved or lost elements takes back all of its light.
+  const auto reach = [](const State& s, const glm::dvec3& eye, const glm::dvec3& up, double size,
+                        const std::vector<uint32_t>& elements) {
+    double factor = 0;
+    for (uint32_t j : elements) {
+      const glm::dvec3 toward = s.centre[j] - eye;
+      const double d = glm::length(toward), r = s.radius[j] + size;
+      if (glm::dot(toward, up) <= -r) continue;  // below the horizon
+      if (d <= 2 * r) return 1.0;
+      factor += s.area[j] / (kPi * (d - r) * (d - r));
+      if (factor >= 1) return 1.0;
+    }
+    return factor;
+  };
+  // Light that stays where it was sent is still shot light, of the patches its elements are in.
+  std::vector<glm::dvec3> keptShot(n.receiver.size(), glm::dvec3(0));
+  for (uint32_t p = 0; p < old.unshot.size(); ++p) {
+    const double power = kPi * channelSum(old.shot[p]) * old.patchArea[p];
+    if (power == 0) continue;
+    bool itself = false;
+    for (uint32_t j : old.elementsOf(p)) itself = itself || changedBefore[j];
+    const glm::dvec3 up = old.surfaces[old.patchSurface[p]].normal;
+    const double share = itself ? 1.0
+                                : std::min(1.0, reach(old, old.patchCentre[p], up, old.patchRadius[p], changed[0]) +
+                                                    reach(n, old.patchCentre[p], up, old.patchRadius[p], changed[1]));
+    if (share > 0) {
+      edit->pending.push_back({p, power * share});
+      edit->pendingPower += power * share;
+      continue;
+    }
+    for (uint32_t j : old.elementsOf(p)) keptShot[edit->elementNow[j]] = old.shot[p];
+  }
+  // The new patches' unshot and shot light from their elements.
+  for (uint32_t q = 0; q < n.unshot.size(); ++q) {
+    n.unshot[q] = n.shot[q] = glm::dvec3(0);
+    for (uint32_t i : n.elementsOf(q)) {
+      n.unshot[q] += n.elementUnshot[i] * (n.area[i] / n.patchArea[q]);
+      n.shot[q] += keptShot[i] * (n.area[i] / n.patchArea[q]);
+    }
+  }
+  std::sort(edit->pending.begin(), edit->pending.end(),
+            [](const Edit::TakeBack& a, const Edit::TakeBack& b) { return a.power < b.power; });
+  if (!edit->pending.empty()) {
+    edit->before = std::move(state_);
+    edit_ = std::move(edit);
+  }
+  state_ = std::move(now);
+}
+
+bool Solver::correct() {
+  if (!edit_ || edit_->pending.empty()) return false;
+  const Edit::TakeBack t = edit_->pending.back();
+  edit_->pending.pop_back();
+  edit_->pendingPower -= t.power;
+  State &before = *edit_->before, &now = *state_;
+  const uint32_t p = t.patch;
+  const glm::dvec3 S = before.shot[p];
+  const double areaBefore = before.patchArea[p];
+
+  // Taken back along the old factors, from the elements that are still there; what fell on
+  // removed ones comes off their ledger.
+  before.shares.clear();
+  for (uint32_t e : before.elementsOf(p)) before.shares.push_back(before.area[e] / areaBefore * glm::dvec3(1));
+  lightPatchTree(before.trees[p], before.shares, before.nodeLight);
+  const glm::dvec3 escaped = before.distribute(p, nullptr, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) {
+    if (const uint32_t i = edit_->elementNow[j]; i != kNone) {
+      now.receive(i, areaBefore, -S, front, behind);
+      return;
+    }
+    const glm::dvec3& rho = before.surfaces[before.surfaceOf[j]].reflectance;
+    const glm::dvec3 power = -kPi * S * areaBefore;
+    now.stats.absorbedPower += (1.0 - rho) * power * front;
+    now.stats.backPower += power * behind;
+    now.stats.removedPower += rho * power * front;
+  });
+  now.stats.escapedPower -= kPi * S * areaBefore * escaped;
+
+  // Sent again along the new factors from the same elements, at once, so that receivers whose
+  // light did not change get back what they lost before they shoot it (the removed elements'
+  // share goes to their ledger). Their patches now may group them otherwise, and may first have
+  // to settle the point they shoot from (which can split them).
+  std::vector<uint32_t>& from = edit_->elements;
+  std::vector<uint32_t>& patches = edit_->patches;
+  from.clear();
+  for (uint32_t j : before.elementsOf(p)) {
+    const uint32_t i = edit_->elementNow[j];
+    if (i == kNone) now.stats.removedPower += kPi * S * before.area[j];
+    else from.push_back(i);
+  }
+  for (bool settled = false; !settled;) {
+    patches.clear();
+    for (uint32_t i : from) patches.push_back(now.patchOf[i]);
+    std::sort(patches.begin(), patches.end());
+    patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+    settled = true;
+    for (uint32_t q : patches)
+      if (!now.pointChosen[q]) now.choosePoint(q), settled = false;
+  }
+  std::sort(from.begin(), from.end());
+  for (uint32_t q : patches) {
+    // The patch's elements that carry p's light send S, the others nothing.
+    double carrying = 0;
+    for (uint32_t i : now.elementsOf(q))
+      if (std::binary_search(from.begin(), from.end(), i)) carrying += now.area[i];
+    now.shares.clear();
+    for (uint32_t i : now.elementsOf(q))
+      now.shares.push_back(glm::dvec3(std::binary_search(from.begin(), from.end(), i) ? now.area[i] / carrying : 0.0));
+    const glm::dvec3 dB = S * (carrying / now.patchArea[q]);
+    lightPatchTree(now.trees[q], now.shares, now.nodeLight);
+    const double area = now.patchArea[q];
+    const glm::dvec3 out = now.distribute(q, nullptr, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) {
+      now.receive(j, area, dB, front, behind);
+    });
+    now.stats.escapedPower += kPi * dB * area * out;
+    now.shot[q] += dB;
+  }
+  ++now.stats.corrections;
+  if (edit_->pending.empty()) edit_.reset();
+  return true;
+}
+
+size_t Solver::pendingCorrections() const { return edit_ ? edit_->pending.size() : 0; }
 
 std::optional<Shooter> Solver::nextShooter() const {
   const State& s = *state_;
@@ -510,6 +732,10 @@ std::optional<Shooter> Solver::nextShooter() const {
 
 bool Solver::step() {
   const auto start = std::chrono::steady_clock::now();
+  if (correct()) {
+    state_->stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return true;
+  }
   State& s = *state_;
   // A patch's first shot settles the point it shoots from; when that splits the patch, the
   // shooter is chosen again.
@@ -530,9 +756,17 @@ double Solver::unshotFraction() const {
   const State& s = *state_;
   const double emitted = channelSum(s.stats.emittedPower);
   if (emitted <= 0) return 0;
-  double unshotPower = 0;
+  // Light still to be taken back after an edit counts as unshot.
+  double unshotPower = edit_ ? edit_->pendingPower : 0;
   for (size_t p = 0; p < s.unshot.size(); ++p) unshotPower += kPi * channelSum(s.unshot[p]) * s.patchArea[p];
   return unshotPower / emitted;
+}
+
+glm::dvec3 Solver::unshotPower() const {
+  const State& s = *state_;
+  glm::dvec3 power{0};
+  for (size_t p = 0; p < s.unshot.size(); ++p) power += kPi * s.unshot[p] * s.patchArea[p];
+  return power;
 }
 
 uint64_t Solver::solve(double fraction, uint64_t maxShots) {

@@ -140,6 +140,7 @@ int runRender(const RenderOptions& options) {
                          {"first_update_ms", firstUpdateMs},
                          {"converge_ms", millisecondsSince(start)},
                          {"elements_changed", changed},
+                         {"corrections", solver->stats().corrections},
                          {"shots", solver->stats().shots},
                          {"unshot_fraction", solver->unshotFraction()}});
   }
