@@ -250,8 +250,7 @@ class SceneParser {
 // A patch size so small that one edge of the scene would need more than kMaxPatchesPerEdge
 // patches is a typo (a size in metres in a scene in millimetres), not a wish.
 void checkPatchSizes(const Scene& scene, const JsonReader& in) {
-  const Vec3 size = scene.boundsMax - scene.boundsMin;
-  const double extent = std::max({size.x, size.y, size.z});
+  const double extent = sceneExtent(scene);
   auto check = [&](const std::optional<double>& patch, const std::string& path) {
     if (patch && extent / *patch > kMaxPatchesPerEdge)
       in.fail(Diag::PatchTooSmall, path, "scene extent " + std::to_string(extent));
@@ -279,7 +278,7 @@ double metersPerUnit(std::string_view units) {
   return 0;
 }
 
-Scene parseScene(std::string_view text, const std::string& file) {
+Scene parseSceneFaces(std::string_view text, const std::string& file) {
   const JsonReader in(file);
   const Json root = in.parse(text);
   Scene scene;
@@ -290,17 +289,24 @@ Scene parseScene(std::string_view text, const std::string& file) {
     for (const Solid& solid : scene.objects[i].solids)
       appendSolidSurfaces(scene, i, solid, scene.objects[i].patchSize, scene.surfaces);
   scene.computeBounds();
-  const Vec3 size = scene.boundsMax - scene.boundsMin;
-  const double extent = std::max({size.x, size.y, size.z});
   // Without settings.patch_size, an eighth of the scene's extent.
-  if (scene.patchSize <= 0) scene.patchSize = extent / 8;
+  if (scene.patchSize <= 0) scene.patchSize = sceneExtent(scene) / 8;
   for (Surface& s : scene.surfaces)
     if (s.patchSize <= 0) s.patchSize = scene.patchSize;
   checkPatchSizes(scene, in);
+  return scene;
+}
+
+void preprocessSurfaces(Scene& scene) {
   // Coplanar faces of one material that touch become one surface (3.2).
-  scene.surfaces = mergeCoplanarSurfaces(scene, std::move(scene.surfaces), 1e-9 * extent);
+  scene.surfaces = mergeCoplanarSurfaces(scene, std::move(scene.surfaces), 1e-9 * sceneExtent(scene));
   // Faces resting on other objects' surfaces are cut out of them.
   cutOutContacts(scene.surfaces, contactTolerance(scene));
+}
+
+Scene parseScene(std::string_view text, const std::string& file) {
+  Scene scene = parseSceneFaces(text, file);
+  preprocessSurfaces(scene);
   return scene;
 }
 
@@ -317,6 +323,15 @@ std::string readInputFile(const std::string& path) {
 
 Scene loadScene(const std::string& path) {
   return parseScene(readInputFile(path), path);
+}
+
+Scene loadSceneFaces(const std::string& path) {
+  return parseSceneFaces(readInputFile(path), path);
+}
+
+double sceneExtent(const Scene& scene) {
+  const Vec3 size = scene.boundsMax - scene.boundsMin;
+  return std::max({size.x, size.y, size.z});
 }
 
 void Scene::computeBounds() {

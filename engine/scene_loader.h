@@ -15,6 +15,18 @@ Scene loadScene(const std::string& path);
 // The same for scene text already in memory; `file` names it in messages.
 Scene parseScene(std::string_view text, const std::string& file);
 
+// The two halves of loadScene, for tools that look at a model as it was described (walkrad
+// check). loadSceneFaces reads and validates like loadScene but leaves Scene::surfaces as the
+// faces themselves, one surface per face and per filled hole, in file order. preprocessSurfaces
+// then makes them the surfaces that are meshed: coplanar merging (thesis 3.2) and contact
+// cut-outs. loadScene is the one followed by the other.
+Scene loadSceneFaces(const std::string& path);
+Scene parseSceneFaces(std::string_view text, const std::string& file);
+void preprocessSurfaces(Scene& scene);
+
+// The largest side of the scene's bounding box (Scene::computeBounds), in scene units.
+double sceneExtent(const Scene& scene);
+
 // The whole text of a file; throws SceneError (FileUnreadable) naming it when it cannot be read.
 std::string readInputFile(const std::string& path);
 
