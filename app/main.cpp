@@ -1,4 +1,5 @@
 // walkrad: the command line of spec/cli.md.
+#include "app/cli/check_command.h"
 #include "app/cli/mesh_command.h"
 #include "app/cli/render_command.h"
 #include "app/window/walk_window.h"
@@ -55,6 +56,11 @@ int main(int argc, char** argv) {
   meshCommand->add_option("--stats", mesh.stats, "write statistics as JSON");
   meshCommand->add_option("--repeat", mesh.repeat, "mesh N times, report the best time")->check(CLI::Range(1, 100000));
 
+  app::CheckOptions check;
+  CLI::App* checkCommand = cli.add_subcommand("check", "list what in a model will light badly, where, and what walkrad does about it");
+  checkCommand->add_option("model", check.model, "scene file (.json)")->required();
+  checkCommand->add_option("--json", check.json, "write the findings as JSON");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -66,6 +72,7 @@ int main(int argc, char** argv) {
   try {
     if (*renderCommand) return app::runRender(render);
     if (*meshCommand) return app::runMesh(mesh);
+    if (*checkCommand) return app::runCheck(check);
     return app::runView(view);
   } catch (const engine::SceneError& e) {
     std::cerr << e.what() << "\n";

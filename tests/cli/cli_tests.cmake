@@ -80,3 +80,17 @@ walkrad_cli_test(render_move_two_numbers 2 ARGS render ${PROJECT_SOURCE_DIR}/ass
                  --move "tall block:1,0" STDERR "expected three numbers")
 walkrad_cli_test(render_move_not_a_number 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
                  --move "tall block:1,x,0" STDERR "expected three numbers")
+
+# walkrad check: findings are not failures (exit 0); a file that cannot be read or breaks the
+# spec is exit 2, as for the other subcommands.
+walkrad_cli_test(check_help 0 ARGS check --help STDOUT "--json")
+walkrad_cli_test(check_cornell 0 ARGS check ${PROJECT_SOURCE_DIR}/assets/cornell.json --json ${out}/check-cornell.json
+                 STDOUT "cornell.json: objects\\[0\\]\\.solids\\[0\\] \\(room, [^)]*\\) at \\([^)]*\\): warning: open edges: an opening of 4 edges.*; walkrad does nothing: .*18 faces checked in [0-9.e-]+ ms: 1 finding \\(1 open edges\\)"
+                 FILE ${out}/check-cornell.json)
+walkrad_cli_test(check_clean 0 ARGS check ${PROJECT_SOURCE_DIR}/assets/furnace.json STDOUT "6 faces checked in [0-9.e-]+ ms: 0 findings")
+walkrad_cli_test(check_missing 2 ARGS check ${out}/no-such-model.json STDERR "no-such-model.json: cannot read the file")
+walkrad_cli_test(check_truncated 2 ARGS check ${cli_dir}/truncated.json STDERR "truncated.json:4:1: not valid JSON")
+walkrad_cli_test(check_non_convex 2 ARGS check ${cli_dir}/bad_profile.json --json ${out}/check-bad.json
+                 STDERR "bad_profile.json: objects\\[0\\]\\.solids\\[0\\]\\.profile: profile is not convex$" NO_FILE ${out}/check-bad.json)
+walkrad_cli_test(check_unwritable_json 1 ARGS check ${PROJECT_SOURCE_DIR}/assets/cornell.json --json ${out}/no/such/dir/c.json
+                 STDERR "c.json: cannot create")

@@ -1,0 +1,19 @@
+// `walkrad check`: lists what is wrong with a model for lighting (engine/model_check.h), with
+// where it is and what walkrad does about it.
+#pragma once
+
+#include <string>
+
+namespace app {
+
+struct CheckOptions {
+  std::string model;  // a scene file
+  std::string json;   // the findings as JSON
+};
+
+// Runs the command; returns the process exit code: 0 when the model could be checked (whatever
+// was found), 2 for bad input, 1 when the JSON cannot be written. Prints one line per finding
+// and a count per kind on stdout.
+int runCheck(const CheckOptions& options);
+
+}  // namespace app

@@ -1,0 +1,606 @@
+// Sections: table | faces prepared (planes, triangles, bounds) | the grid | coplanar pairs |
+// crossing pairs | edges of objects | backs seen | checkModel.
+#include "engine/model_check.h"
+
+#include "mesher/triangulate.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <tuple>
+#include <unordered_map>
+
+namespace engine {
+
+// ---- table ----
+
+namespace {
+
+struct KindInfo {
+  const char* id;
+  Severity severity;
+  const char* name;
+  const char* action;
+};
+
+constexpr KindInfo kKinds[] = {
+#define WALKRAD_FINDING_INFO(id, severity, name, action) {#id, Severity::severity, name, action},
+    WALKRAD_MODEL_FINDINGS(WALKRAD_FINDING_INFO)
+#undef WALKRAD_FINDING_INFO
+};
+static_assert(std::size(kKinds) == kFindingKinds);
+
+}  // namespace
+
+const char* idOf(FindingKind kind) { return kKinds[static_cast<size_t>(kind)].id; }
+const char* nameOf(FindingKind kind) { return kKinds[static_cast<size_t>(kind)].name; }
+const char* actionOf(FindingKind kind) { return kKinds[static_cast<size_t>(kind)].action; }
+Severity severityOf(FindingKind kind) { return kKinds[static_cast<size_t>(kind)].severity; }
+
+const char* nameOf(Severity severity) {
+  switch (severity) {
+    case Severity::Error: return "error";
+    case Severity::Warning: return "warning";
+    case Severity::Note: return "note";
+  }
+  return "?";
+}
+
+std::string describeLocation(const Scene& scene, const Finding& finding) {
+  const Surface& s = scene.surfaces[finding.surface];
+  std::ostringstream out;
+  out << std::setprecision(6) << s.jsonPath << " (" << scene.objects[s.object].name << ", " << s.face << ") at ("
+      << finding.point.x << ", " << finding.point.y << ", " << finding.point.z << ")";
+  return out.str();
+}
+
+namespace {
+
+using Triangle = std::array<Vec3, 3>;
+
+std::string faceName(const Scene& scene, uint32_t surface) {
+  const Surface& s = scene.surfaces[surface];
+  return "\"" + scene.objects[s.object].name + "\" " + s.face + " (" + s.jsonPath + ")";
+}
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << std::setprecision(4) << value;
+  return out.str();
+}
+
+// ---- faces prepared (planes, triangles, bounds) ----
+
+// The index of the coordinate a plane with normal n is projected along (its largest).
+int dominantAxis(const Vec3& n) {
+  const Vec3 a = glm::abs(n);
+  return a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+}
+
+mesher::Vec2 drop(const Vec3& p, int axis) {
+  return axis == 0 ? mesher::Vec2{p.y, p.z} : (axis == 1 ? mesher::Vec2{p.z, p.x} : mesher::Vec2{p.x, p.y});
+}
+
+struct Face {
+  bool degenerate = false;
+  Vec3 normal{0};
+  double offset = 0;            // the plane is dot(normal, p) = offset
+  double area = 0;
+  Vec3 lo{0}, hi{0};            // bounds, padded by the tolerance
+  uint32_t firstTriangle = 0, triangleCount = 0;
+  Vec3 inside{0};               // a point strictly inside the face (its largest triangle's centroid)
+};
+
+// Newell's vector of a ring: its direction is the ring's normal, its length twice its area.
+Vec3 newell(const Ring3& ring) {
+  Vec3 sum{0};
+  for (size_t i = 0; i < ring.size(); ++i) sum += glm::cross(ring[i], ring[(i + 1) % ring.size()]);
+  return sum;
+}
+
+void prepareFace(const Surface& s, double tolerance, Face& face, std::vector<Triangle>& triangles) {
+  face.firstTriangle = static_cast<uint32_t>(triangles.size());
+  double longest = 0;
+  for (size_t i = 0; i < s.outer.size(); ++i)
+    longest = std::max(longest, glm::length(s.outer[(i + 1) % s.outer.size()] - s.outer[i]));
+  const Vec3 n = newell(s.outer);
+  double area = 0.5 * glm::length(n);
+  for (const Ring3& hole : s.holes) area -= 0.5 * glm::length(newell(hole));
+  face.area = area;
+  // No width anywhere above the tolerance: a point, a line, or a ring folded onto itself.
+  face.degenerate = s.outer.size() < 3 || area <= tolerance * longest;
+  if (face.degenerate) return;
+  face.normal = glm::normalize(n);
+  face.offset = glm::dot(face.normal, s.outer.front());
+  face.lo = face.hi = s.outer.front();
+  for (const Vec3& p : s.outer) {
+    face.lo = glm::min(face.lo, p);
+    face.hi = glm::max(face.hi, p);
+  }
+  face.lo -= Vec3(tolerance);
+  face.hi += Vec3(tolerance);
+
+  // Tiled by ear clipping in the projection along the normal's largest coordinate.
+  const int axis = dominantAxis(face.normal);
+  mesher::PolygonWithHoles polygon;
+  std::vector<Vec3> points(s.outer);
+  for (const Vec3& p : s.outer) polygon.outer.push_back(drop(p, axis));
+  for (const Ring3& hole : s.holes) {
+    polygon.holes.emplace_back();
+    for (const Vec3& p : hole) polygon.holes.back().push_back(drop(p, axis));
+    points.insert(points.end(), hole.begin(), hole.end());
+  }
+  double largest = -1;
+  for (const auto& t : s.outer.size() == 3 && s.holes.empty() ? std::vector<std::array<uint32_t, 3>>{{0, 1, 2}}
+                                                              : mesher::triangulate(polygon)) {
+    const Triangle triangle{points[t[0]], points[t[1]], points[t[2]]};
+    const double a = glm::length(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
+    if (a > largest) {
+      largest = a;
+      face.inside = (triangle[0] + triangle[1] + triangle[2]) / 3.0;
+    }
+    triangles.push_back(triangle);
+  }
+  face.triangleCount = static_cast<uint32_t>(triangles.size()) - face.firstTriangle;
+  face.degenerate = face.triangleCount == 0;
+}
+
+// ---- the grid ----
+
+// A uniform grid over the faces' bounds; each cell lists the faces whose bounds reach into it
+// (compressed rows: cellStart_[c] .. cellStart_[c + 1] in faces_).
+class FaceGrid {
+ public:
+  FaceGrid(const std::vector<Face>& faces, double cellSize, Vec3 lo, Vec3 hi) : lo_(lo), cell_(cellSize) {
+    for (int k = 0; k < 3; ++k) size_[k] = std::max(1, static_cast<int>(std::ceil((hi[k] - lo[k]) / cell_)));
+    cellStart_.assign(static_cast<size_t>(size_[0]) * size_[1] * size_[2] + 1, 0);
+    forEachCell(faces, [&](uint32_t, size_t c) { ++cellStart_[c + 1]; });
+    std::partial_sum(cellStart_.begin(), cellStart_.end(), cellStart_.begin());
+    faces_.resize(cellStart_.back());
+    std::vector<uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+    forEachCell(faces, [&](uint32_t f, size_t c) { faces_[fill[c]++] = f; });
+  }
+
+  glm::ivec3 cellOf(const Vec3& p) const {
+    glm::ivec3 c;
+    for (int k = 0; k < 3; ++k) c[k] = std::clamp(static_cast<int>(std::floor((p[k] - lo_[k]) / cell_)), 0, size_[k] - 1);
+    return c;
+  }
+  size_t index(glm::ivec3 c) const { return (static_cast<size_t>(c.z) * size_[1] + c.y) * size_[0] + c.x; }
+  size_t cellCount() const { return cellStart_.size() - 1; }
+  const uint32_t* begin(size_t c) const { return faces_.data() + cellStart_[c]; }
+  const uint32_t* end(size_t c) const { return faces_.data() + cellStart_[c + 1]; }
+  glm::ivec3 size() const { return size_; }
+  Vec3 lo() const { return lo_; }
+  double cell() const { return cell_; }
+
+ private:
+  template <typename Visit>
+  void forEachCell(const std::vector<Face>& faces, Visit visit) const {
+    for (uint32_t f = 0; f < faces.size(); ++f) {
+      if (faces[f].degenerate) continue;
+      const glm::ivec3 a = cellOf(faces[f].lo), b = cellOf(faces[f].hi);
+      for (int z = a.z; z <= b.z; ++z)
+        for (int y = a.y; y <= b.y; ++y)
+          for (int x = a.x; x <= b.x; ++x) visit(f, index({x, y, z}));
+    }
+  }
+
+  Vec3 lo_;
+  double cell_;
+  glm::ivec3 size_{1};
+  std::vector<uint32_t> cellStart_, faces_;
+};
+
+// ---- coplanar pairs ----
+
+double area2(const std::vector<mesher::Vec2>& polygon) {
+  double sum = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const mesher::Vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+    sum += a.x * b.y - a.y * b.x;
+  }
+  return 0.5 * sum;
+}
+
+// Area of the intersection of two triangles in the plane (Sutherland-Hodgman: `b` clipped by
+// each edge of `a`).
+double overlapArea(std::array<mesher::Vec2, 3> a, const std::array<mesher::Vec2, 3>& b) {
+  if (mesher::orient2(a[0], a[1], a[2]) < 0) std::swap(a[1], a[2]);
+  std::vector<mesher::Vec2> polygon(b.begin(), b.end()), next;
+  for (int e = 0; e < 3 && !polygon.empty(); ++e) {
+    const mesher::Vec2 p = a[e], q = a[(e + 1) % 3];
+    next.clear();
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      const mesher::Vec2 c = polygon[i], d = polygon[(i + 1) % polygon.size()];
+      const double sc = mesher::orient2(p, q, c), sd = mesher::orient2(p, q, d);
+      if (sc >= 0) next.push_back(c);
+      if ((sc >= 0) != (sd >= 0)) next.push_back(c + (d - c) * (sc / (sc - sd)));
+    }
+    polygon.swap(next);
+  }
+  return polygon.size() < 3 ? 0 : std::abs(area2(polygon));
+}
+
+// The overlap of two coplanar faces and their own areas, all projected along `axis`.
+struct Overlap {
+  double shared = 0, a = 0, b = 0;
+};
+
+Overlap coplanarOverlap(const Face& fa, const Face& fb, const std::vector<Triangle>& triangles, int axis) {
+  const auto project = [&](const Face& f) {
+    std::vector<std::array<mesher::Vec2, 3>> out;
+    for (uint32_t t = f.firstTriangle; t < f.firstTriangle + f.triangleCount; ++t)
+      out.push_back({drop(triangles[t][0], axis), drop(triangles[t][1], axis), drop(triangles[t][2], axis)});
+    return out;
+  };
+  const auto ta = project(fa), tb = project(fb);
+  Overlap overlap;
+  for (const auto& t : ta) overlap.a += 0.5 * std::abs(mesher::orient2(t[0], t[1], t[2]));
+  for (const auto& t : tb) overlap.b += 0.5 * std::abs(mesher::orient2(t[0], t[1], t[2]));
+  for (const auto& s : ta) {
+    const mesher::Vec2 sLo = glm::min(s[0], glm::min(s[1], s[2])), sHi = glm::max(s[0], glm::max(s[1], s[2]));
+    for (const auto& t : tb) {
+      const mesher::Vec2 tLo = glm::min(t[0], glm::min(t[1], t[2])), tHi = glm::max(t[0], glm::max(t[1], t[2]));
+      if (sHi.x <= tLo.x || tHi.x <= sLo.x || sHi.y <= tLo.y || tHi.y <= sLo.y) continue;
+      overlap.shared += overlapArea(s, t);
+    }
+  }
+  return overlap;
+}
+
+// Every point of `s` within `tolerance` of face f's plane.
+bool onPlane(const Surface& s, const Face& f, double tolerance) {
+  for (const Vec3& p : s.outer)
+    if (std::abs(glm::dot(f.normal, p) - f.offset) > tolerance) return false;
+  return true;
+}
+
+// ---- crossing pairs ----
+
+// Where the rings of `s` cross the plane n.p = offset, as intervals of the line along
+// `direction` (unit) that lies in that plane: parameters dot(p, direction), paired in order.
+// Points within `tolerance` of the plane count as in front, so a face that only touches the
+// plane yields nothing. Empty unless `s` has points strictly on both sides.
+std::vector<double> crossings(const Surface& s, const Vec3& n, double offset, const Vec3& direction, double tolerance) {
+  bool front = false, back = false;
+  const auto distance = [&](const Vec3& p) { return glm::dot(n, p) - offset; };
+  for (const Vec3& p : s.outer) {
+    front |= distance(p) > tolerance;
+    back |= distance(p) < -tolerance;
+  }
+  if (!front || !back) return {};
+  std::vector<double> out;
+  const auto ring = [&](const Ring3& r) {
+    for (size_t i = 0; i < r.size(); ++i) {
+      const Vec3 &p = r[i], &q = r[(i + 1) % r.size()];
+      const double dp = distance(p), dq = distance(q);
+      if ((dp >= -tolerance) == (dq >= -tolerance)) continue;
+      const double t = std::clamp(dp / (dp - dq), 0.0, 1.0);
+      out.push_back(glm::dot(p + t * (q - p), direction));
+    }
+  };
+  ring(s.outer);
+  for (const Ring3& hole : s.holes) ring(hole);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The longest stretch inside both interval lists ([x0, x1], [x2, x3], ...); its middle is
+// returned in `middle`.
+double sharedStretch(const std::vector<double>& a, const std::vector<double>& b, double& middle) {
+  double best = 0;
+  for (size_t i = 0; i + 1 < a.size(); i += 2)
+    for (size_t j = 0; j + 1 < b.size(); j += 2) {
+      const double lo = std::max(a[i], b[j]), hi = std::min(a[i + 1], b[j + 1]);
+      if (hi - lo > best) {
+        best = hi - lo;
+        middle = 0.5 * (lo + hi);
+      }
+    }
+  return best;
+}
+
+// ---- edges of objects ----
+
+struct EdgeUse {
+  std::array<uint32_t, 2> uses{0, 0};  // [0] from the lower vertex id to the higher, [1] back
+  std::array<std::array<uint32_t, 2>, 2> faces{};  // the first two faces using it each way
+  double length = 0;
+  Vec3 middle{0};
+};
+
+// Vertex ids shared by points closer than the tolerance (points snapped to a lattice of that
+// spacing; points either side of a lattice boundary stay apart, which only makes an edge look
+// open where a model has near-miss vertices).
+class VertexIds {
+ public:
+  explicit VertexIds(double tolerance) : step_(tolerance) {}
+  uint32_t operator()(const Vec3& p) {
+    const std::array<int64_t, 3> key{std::llround(p.x / step_), std::llround(p.y / step_), std::llround(p.z / step_)};
+    return ids_.try_emplace(key, static_cast<uint32_t>(ids_.size())).first->second;
+  }
+
+ private:
+  double step_;
+  std::map<std::array<int64_t, 3>, uint32_t> ids_;
+};
+
+// Union-find over vertex ids, to gather open edges into openings.
+uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
+  while (parent[v] != v) v = parent[v] = parent[parent[v]];
+  return v;
+}
+
+void checkEdges(const Scene& scene, const std::vector<Face>& faces, double tolerance, double closedShare,
+                std::vector<Finding>& out) {
+  VertexIds ids(tolerance);
+  // Per object, its edges by (lower id, higher id).
+  std::vector<std::map<std::pair<uint32_t, uint32_t>, EdgeUse>> edges(scene.objects.size());
+  for (uint32_t f = 0; f < faces.size(); ++f) {
+    if (faces[f].degenerate) continue;
+    const Surface& s = scene.surfaces[f];
+    const auto ring = [&](const Ring3& r) {
+      for (size_t i = 0; i < r.size(); ++i) {
+        const Vec3 &p = r[i], &q = r[(i + 1) % r.size()];
+        const uint32_t a = ids(p), b = ids(q);
+        if (a == b) continue;
+        EdgeUse& use = edges[s.object][std::minmax(a, b)];
+        const size_t way = a < b ? 0 : 1;
+        if (use.uses[way] < 2) use.faces[way][use.uses[way]] = f;
+        ++use.uses[way];
+        use.length = glm::length(q - p);
+        use.middle = 0.5 * (p + q);
+      }
+    };
+    ring(s.outer);
+    for (const Ring3& hole : s.holes) ring(hole);
+  }
+
+  for (uint32_t o = 0; o < edges.size(); ++o) {
+    double total = 0, shared = 0;
+    std::set<std::pair<uint32_t, uint32_t>> flipped;  // face pairs already reported
+    for (const auto& [key, use] : edges[o]) {
+      total += use.length;
+      if (use.uses[0] + use.uses[1] >= 2) shared += use.length;
+      // Two faces run along an edge the same way: one of them is turned over. The later one is
+      // reported.
+      for (size_t way : {0, 1})
+        if (use.uses[way] >= use.uses[1 - way] + 2) {
+          const auto [first, later] = use.faces[way];
+          if (flipped.insert({first, later}).second)
+            out.push_back({FindingKind::InconsistentOrientation, later, first, use.middle,
+                           "runs along an edge of " + faceName(scene, first) + " the same way: their normals disagree"});
+        }
+    }
+    if (total <= 0 || shared < closedShare * total) continue;
+
+    // A solid with open edges: gather them into openings (connected runs of open edges).
+    std::vector<std::pair<const std::pair<uint32_t, uint32_t>*, const EdgeUse*>> open;
+    for (const auto& [key, use] : edges[o])
+      if ((use.uses[0] + use.uses[1]) % 2 == 1) open.push_back({&key, &use});
+    if (open.empty()) continue;
+    std::map<uint32_t, uint32_t> local;
+    for (const auto& [key, use] : open) {
+      local.try_emplace(key->first, static_cast<uint32_t>(local.size()));
+      local.try_emplace(key->second, static_cast<uint32_t>(local.size()));
+    }
+    std::vector<uint32_t> parent(local.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const auto& [key, use] : open) parent[findRoot(parent, local[key->first])] = findRoot(parent, local[key->second]);
+    struct Opening {
+      size_t edges = 0;
+      double length = 0;
+      const EdgeUse* first = nullptr;
+    };
+    std::map<uint32_t, Opening> openings;
+    for (const auto& [key, use] : open) {
+      Opening& opening = openings[findRoot(parent, local[key->first])];
+      ++opening.edges;
+      opening.length += use->length;
+      if (!opening.first) opening.first = use;
+    }
+    for (const auto& [root, opening] : openings) {
+      const EdgeUse& use = *opening.first;
+      const uint32_t face = use.uses[0] > 0 ? use.faces[0][0] : use.faces[1][0];
+      out.push_back({FindingKind::OpenEdge, face, -1, use.middle,
+                     "an opening of " + std::to_string(opening.edges) + " edge" + (opening.edges == 1 ? "" : "s") +
+                         " (" + number(opening.length) + " long) in object \"" + scene.objects[o].name + "\", " +
+                         number(100 * shared / total) + "% of whose edges are closed"});
+    }
+  }
+}
+
+// ---- backs seen ----
+
+// Distance along the ray to triangle t (Moller-Trumbore), or a negative number for a miss.
+double rayHit(const Vec3& origin, const Vec3& direction, const Triangle& t) {
+  const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+  const Vec3 p = glm::cross(direction, e2);
+  const double det = glm::dot(e1, p);
+  if (std::abs(det) < 1e-300) return -1;
+  const Vec3 s = origin - t[0];
+  const double u = glm::dot(s, p) / det;
+  if (u < 0 || u > 1) return -1;
+  const Vec3 q = glm::cross(s, e1);
+  const double v = glm::dot(direction, q) / det;
+  if (v < 0 || u + v > 1) return -1;
+  return glm::dot(e2, q) / det;
+}
+
+// The nearest face met by the ray (walking the grid cell by cell, Amanatides-Woo), skipping
+// `self` and fronts at the start (coincident faces, reported as such). Returns the face and its
+// distance, or a negative face for none.
+std::pair<int64_t, double> castRay(const FaceGrid& grid, const std::vector<Face>& faces,
+                                   const std::vector<Triangle>& triangles, uint32_t self, const Vec3& origin,
+                                   const Vec3& direction, double tolerance, std::vector<uint32_t>& stamp, uint32_t ray) {
+  glm::ivec3 cell = grid.cellOf(origin);
+  glm::ivec3 step;
+  Vec3 next, delta;
+  for (int k = 0; k < 3; ++k) {
+    step[k] = direction[k] > 0 ? 1 : -1;
+    const double boundary = grid.lo()[k] + (cell[k] + (direction[k] > 0 ? 1 : 0)) * grid.cell();
+    next[k] = direction[k] != 0 ? (boundary - origin[k]) / direction[k] : INFINITY;
+    delta[k] = direction[k] != 0 ? grid.cell() / std::abs(direction[k]) : INFINITY;
+  }
+  int64_t best = -1;
+  double bestT = INFINITY;
+  bool bestFront = false;
+  for (;;) {
+    const size_t c = grid.index(cell);
+    for (const uint32_t* f = grid.begin(c); f != grid.end(c); ++f) {
+      if (*f == self || stamp[*f] == ray) continue;
+      stamp[*f] = ray;
+      const Face& face = faces[*f];
+      for (uint32_t t = face.firstTriangle; t < face.firstTriangle + face.triangleCount; ++t) {
+        const double hit = rayHit(origin, direction, triangles[t]);
+        if (hit < -tolerance || hit > bestT + tolerance) continue;
+        const bool front = glm::dot(face.normal, direction) < 0;
+        if (hit <= tolerance && front) continue;
+        // Faces at the same place (one solid resting on another) tie: a back there covers.
+        const bool tie = hit >= bestT - tolerance;
+        if (tie && (front || !bestFront)) continue;
+        best = *f;
+        bestT = hit;
+        bestFront = front;
+      }
+    }
+    const int k = next.x < next.y ? (next.x < next.z ? 0 : 2) : (next.y < next.z ? 1 : 2);
+    if (bestT + tolerance < next[k]) break;  // nothing nearer lies in cells further on
+    cell[k] += step[k];
+    if (cell[k] < 0 || cell[k] >= grid.size()[k]) break;
+    next[k] += delta[k];
+  }
+  return {best, bestT};
+}
+
+}  // namespace
+
+// ---- checkModel ----
+
+std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& settings) {
+  std::vector<Finding> out;
+  const size_t n = scene.surfaces.size();
+  if (n == 0) return out;
+
+  // Faces prepared: planes, bounds, triangles.
+  Vec3 lo = scene.surfaces.front().outer.empty() ? Vec3(0) : scene.surfaces.front().outer.front(), hi = lo;
+  for (const Surface& s : scene.surfaces)
+    for (const Vec3& p : s.outer) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  const double tolerance = settings.tolerance > 0 ? settings.tolerance : 1e-6 * extent;
+  std::vector<Face> faces(n);
+  std::vector<Triangle> triangles;
+  for (uint32_t f = 0; f < n; ++f) {
+    prepareFace(scene.surfaces[f], tolerance, faces[f], triangles);
+    if (faces[f].degenerate) {
+      const Ring3& ring = scene.surfaces[f].outer;
+      out.push_back({FindingKind::DegenerateFace, f, -1, ring.empty() ? Vec3(0) : ring.front(),
+                     "area " + number(faces[f].area) + ": its points lie on a line or on one point"});
+    }
+  }
+
+  // The grid: cells about twice the typical face, at most 128 along the scene.
+  std::vector<double> sizes;
+  for (const Face& f : faces)
+    if (!f.degenerate) {
+      const Vec3 d = f.hi - f.lo;
+      sizes.push_back(std::max({d.x, d.y, d.z}));
+    }
+  if (sizes.empty()) return out;
+  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
+  const double cell = std::max({2 * sizes[sizes.size() / 2], extent / 128, tolerance});
+  const FaceGrid grid(faces, cell, lo - Vec3(2 * tolerance), hi + Vec3(2 * tolerance));
+
+  // Pairs of faces whose bounds overlap, each met once: in the cell holding the low corner of
+  // their bounds' overlap.
+  for (size_t c = 0; c < grid.cellCount(); ++c)
+    for (const uint32_t* i = grid.begin(c); i != grid.end(c); ++i)
+      for (const uint32_t* j = i + 1; j != grid.end(c); ++j) {
+        const uint32_t a = std::min(*i, *j), b = std::max(*i, *j);
+        const Face &fa = faces[a], &fb = faces[b];
+        const Vec3 overlapLo = glm::max(fa.lo, fb.lo), overlapHi = glm::min(fa.hi, fb.hi);
+        if (overlapLo.x > overlapHi.x || overlapLo.y > overlapHi.y || overlapLo.z > overlapHi.z) continue;
+        if (grid.index(grid.cellOf(overlapLo)) != c) continue;
+        const Surface &sa = scene.surfaces[a], &sb = scene.surfaces[b];
+
+        // Coplanar pairs: duplicates, coincident (same way), back to back (opposite).
+        const double facing = glm::dot(fa.normal, fb.normal);
+        if (std::abs(facing) > 0.99 && onPlane(sb, fa, tolerance) && onPlane(sa, fb, tolerance)) {
+          const Overlap overlap = coplanarOverlap(fa, fb, triangles, dominantAxis(fa.normal));
+          if (overlap.shared <= 1e-6 * std::min(overlap.a, overlap.b) + tolerance * tolerance) continue;
+          const Vec3 point = fb.inside;
+          const std::string share = number(100 * overlap.shared / overlap.b) + "% of it";
+          if (facing > 0) {
+            const bool same = overlap.shared >= (1 - 1e-6) * std::max(overlap.a, overlap.b);
+            if (same)
+              out.push_back({FindingKind::DuplicateFace, b, a, point, "the same polygon as " + faceName(scene, a)});
+            else
+              out.push_back({FindingKind::CoincidentFaces, b, a, point,
+                             share + " lies on " + faceName(scene, a) + ", facing the same way"});
+          } else if (sa.object == sb.object) {
+            // Between objects this is one resting on the other: contact cut-outs handle it.
+            out.push_back({FindingKind::BackToBackFaces, b, a, point, share + " lies on " + faceName(scene, a) + ", back to back"});
+          }
+          continue;
+        }
+
+        // Crossing pairs: each has points strictly on both sides of the other's plane, and the
+        // chords the two planes cut from them share a stretch.
+        const Vec3 u = glm::cross(fa.normal, fb.normal);
+        if (glm::length(u) < 1e-9) continue;  // parallel planes apart
+        const Vec3 along = glm::normalize(u);
+        const std::vector<double> ca = crossings(sa, fb.normal, fb.offset, along, tolerance);
+        if (ca.empty()) continue;
+        const std::vector<double> cb = crossings(sb, fa.normal, fa.offset, along, tolerance);
+        if (cb.empty()) continue;
+        double middle = 0;
+        const double stretch = sharedStretch(ca, cb, middle);
+        if (stretch <= tolerance) continue;
+        // The point of the line of the two planes at parameter `middle`.
+        const Vec3 onLine = (fa.offset * glm::cross(fb.normal, u) + fb.offset * glm::cross(u, fa.normal)) / glm::dot(u, u);
+        out.push_back({FindingKind::Interpenetration, a, b, onLine + middle * along,
+                       "crosses " + faceName(scene, b) + " along " + number(stretch)});
+      }
+
+  // Edges of objects: orientation and openings.
+  checkEdges(scene, faces, tolerance, settings.closedShare, out);
+
+  // Backs seen: from a point inside each face, straight back and 45 degrees off it four ways,
+  // the first face met shows its front.
+  std::vector<uint32_t> stamp(n, 0);
+  uint32_t ray = 0;
+  for (uint32_t f = 0; f < n; ++f) {
+    if (faces[f].degenerate) continue;
+    const Vec3 back = -faces[f].normal;
+    const Vec3 t1 = glm::normalize(glm::cross(back, std::abs(back.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+    const Vec3 t2 = glm::cross(back, t1);
+    for (const Vec3& direction : {back, glm::normalize(back + t1), glm::normalize(back - t1), glm::normalize(back + t2),
+                                  glm::normalize(back - t2)}) {
+      const auto [hit, distance] =
+          castRay(grid, faces, triangles, f, faces[f].inside, direction, tolerance, stamp, ++ray);
+      if (hit < 0 || glm::dot(faces[hit].normal, direction) >= 0) continue;  // none, or a back
+      out.push_back({FindingKind::Facade, f, hit, faces[f].inside,
+                     "its back is seen from the front of " + faceName(scene, static_cast<uint32_t>(hit)) + ", " +
+                         number(distance) + " away"});
+      break;
+    }
+  }
+
+  std::stable_sort(out.begin(), out.end(), [](const Finding& x, const Finding& y) {
+    return std::tie(x.surface, x.kind) < std::tie(y.surface, y.kind);
+  });
+  return out;
+}
+
+}  // namespace engine
