@@ -1,5 +1,6 @@
 // walkrad: the command line of spec/cli.md.
 #include "app/cli/check_command.h"
+#include "app/cli/export_command.h"
 #include "app/cli/mesh_command.h"
 #include "app/cli/render_command.h"
 #include "app/window/walk_window.h"
@@ -25,13 +26,13 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--stats", render.stats, "write statistics as JSON");
   renderCommand->add_option("--exposure", render.exposure, "radiance scale before sRGB (default: automatic)")
       ->check(CLI::PositiveNumber);
-  renderCommand->add_option("--patch-size", render.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
-  renderCommand->add_option("--converge", render.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
+  renderCommand->add_option("--patch-size", render.solve.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
+  renderCommand->add_option("--converge", render.solve.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
       ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
-  renderCommand->add_option("--max-shots", render.maxShots, "stop after this many shots even if not converged");
-  renderCommand->add_option("--threads", render.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
+  renderCommand->add_option("--max-shots", render.solve.maxShots, "stop after this many shots even if not converged");
+  renderCommand->add_option("--threads", render.solve.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
       ->check(CLI::Range(1, 64));
-  renderCommand->add_flag("--quiet", render.quiet, "no progress lines on stdout");
+  renderCommand->add_flag("--quiet", render.solve.quiet, "no progress lines on stdout");
   renderCommand->add_option("--move", render.moves, "after converging, move OBJECT by DX,DY,DZ and converge again (OBJECT:DX,DY,DZ; repeatable)")
       ->allow_extra_args(false);
 
@@ -61,6 +62,20 @@ int main(int argc, char** argv) {
   checkCommand->add_option("model", check.model, "scene file (.json)")->required();
   checkCommand->add_option("--json", check.json, "write the findings as JSON");
 
+  app::ExportOptions exporting;
+  CLI::App* exportCommand = cli.add_subcommand("export", "mesh and solve a scene, write it as glTF with the light in its vertex colours");
+  exportCommand->add_option("scene", exporting.scene, "scene file (.json)")->required();
+  exportCommand->add_option("--out", exporting.out, "the glTF file: .glb (binary) or .gltf (text)")->required();
+  exportCommand->add_option("--exposure", exporting.exposure, "radiance scale before clamping to COLOR_0 (default: automatic)")
+      ->check(CLI::PositiveNumber);
+  exportCommand->add_option("--patch-size", exporting.solve.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
+  exportCommand->add_option("--converge", exporting.solve.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
+      ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
+  exportCommand->add_option("--max-shots", exporting.solve.maxShots, "stop after this many shots even if not converged");
+  exportCommand->add_option("--threads", exporting.solve.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
+      ->check(CLI::Range(1, 64));
+  exportCommand->add_flag("--quiet", exporting.solve.quiet, "no progress lines on stdout");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,6 +88,7 @@ int main(int argc, char** argv) {
     if (*renderCommand) return app::runRender(render);
     if (*meshCommand) return app::runMesh(mesh);
     if (*checkCommand) return app::runCheck(check);
+    if (*exportCommand) return app::runExport(exporting);
     return app::runView(view);
   } catch (const engine::SceneError& e) {
     std::cerr << e.what() << "\n";

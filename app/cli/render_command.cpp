@@ -64,12 +64,7 @@ int runRender(const RenderOptions& options) {
     return 2;
   }
   auto start = Clock::now();
-  engine::Scene loaded = engine::loadScene(options.scene);
-  // Outputs are checked after the scene (bad input is exit 2 first) and before the long part.
-  for (const std::string& file : {options.out, options.linear, options.stats})
-    if (!file.empty()) checkCanWrite(file);
-  if (options.patchSize)
-    for (engine::Surface& s : loaded.surfaces) s.patchSize = *options.patchSize;
+  engine::Scene loaded = loadForSolve(options.scene, {options.out, options.linear, options.stats}, options.solve.patchSize);
   const double loadMs = millisecondsSince(start);
 
   ViewCamera camera;
@@ -94,21 +89,9 @@ int runRender(const RenderOptions& options) {
   // Solve first (progress on stdout about once a second), then light the display from it.
   start = Clock::now();
   radiosity::SolverSettings settings;
-  settings.graphicsProcessors = options.threads;
+  settings.graphicsProcessors = options.solve.threads;
   auto solver = std::make_unique<radiosity::Solver>(engine::radiosityInput(editor.scene(), editor.meshed()), settings);
-  auto lastReport = start;
-  const auto solve = [&](const char* what) {
-    const uint64_t shots = engine::solveTo(*solver, options.converge, options.maxShots, [&](const radiosity::Solver& s, uint64_t n) {
-      if (options.quiet || std::chrono::duration<double>(Clock::now() - lastReport).count() < 1) return;
-      lastReport = Clock::now();
-      std::cout << "walkrad render: " << n << " shots, unshot " << 100 * s.unshotFraction() << "%" << std::endl;
-    });
-    if (!options.quiet)
-      std::cout << "walkrad render: " << what << " in " << millisecondsSince(start) / 1000 << " s: " << shots
-                << " shots, unshot " << 100 * solver->unshotFraction() << "%, " << solver->patchCount() << " patches, "
-                << solver->elementCount() << " elements" << std::endl;
-    return shots;
-  };
+  const auto solve = [&](const std::string& what) { return solveWithProgress(*solver, options.solve, "render", what, start); };
   uint64_t shots = solve("solved");
   const double solveMs = millisecondsSince(start);
 
@@ -126,7 +109,7 @@ int runRender(const RenderOptions& options) {
     engine::applyEdit(solver, input, settings);
     const bool first = solver->step();  // the first relit solution a display could show
     const double firstUpdateMs = millisecondsSince(start);
-    shots += first + solve(("move " + std::to_string(i + 1) + " converged").c_str());
+    shots += first + solve("move " + std::to_string(i + 1) + " converged");
     // Elements that moved or were made anew (the object's, and those of surfaces whose footprints
     // changed).
     std::vector<uint32_t> touched = editor.surfacesOf(move.object);
@@ -168,7 +151,7 @@ int runRender(const RenderOptions& options) {
         {"shots", shots},
         {"unshot_fraction", solver->unshotFraction()},
         {"shots_per_second", solveMs > 0 ? 1000.0 * static_cast<double>(shots) / solveMs : 0.0},
-        {"graphics_processors", options.threads},
+        {"graphics_processors", options.solve.threads},
         {"surfaces", scene.surfaces.size()},
         {"objects", scene.objects.size()},
         {"exposure", exposure},

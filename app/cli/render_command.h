@@ -1,6 +1,8 @@
 // `walkrad render`: a headless image of a scene (spec/cli.md).
 #pragma once
 
+#include "app/cli/scene_solve.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,11 +19,7 @@ struct RenderOptions {
   int width = 640, height = 480;
   bool wireframe = false;
   std::optional<double> exposure;  // none: automatic
-  std::optional<double> patchSize; // none: the scene's
-  double converge = 0.01;          // shoot until the unshot fraction is below this
-  uint64_t maxShots = UINT64_MAX;  // or until this many shots
-  int threads = 1;                 // pxpl5 graphics processors
-  bool quiet = false;              // no progress lines (stdout)
+  SolveOptions solve;
   std::vector<std::string> moves;  // OBJECT:DX,DY,DZ, applied in order after converging
 };
 

@@ -94,3 +94,22 @@ walkrad_cli_test(check_non_convex 2 ARGS check ${cli_dir}/bad_profile.json --jso
                  STDERR "bad_profile.json: objects\\[0\\]\\.solids\\[0\\]\\.profile: profile is not convex$" NO_FILE ${out}/check-bad.json)
 walkrad_cli_test(check_unwritable_json 1 ARGS check ${PROJECT_SOURCE_DIR}/assets/cornell.json --json ${out}/no/such/dir/c.json
                  STDERR "c.json: cannot create")
+
+# walkrad export: the solved scene as glTF; bad input is exit 2, an unwritable output 1.
+walkrad_cli_test(export_help 0 ARGS export --help STDOUT "--exposure")
+walkrad_cli_test(export_glb 0 ARGS export ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-cornell.glb --max-shots 30
+                 STDOUT "solved in [0-9.e-]+ s: 30 shots.*cli-cornell.glb: [0-9]+ bytes, [0-9]+ triangles, [0-9]+ vertices, exposure [0-9.e-]+"
+                 FILE ${out}/cli-cornell.glb)
+walkrad_cli_test(export_gltf 0 ARGS export ${PROJECT_SOURCE_DIR}/assets/box-on-floor.json --out ${out}/cli-box.gltf --max-shots 10
+                 --exposure 2 --quiet FILE ${out}/cli-box.gltf)
+walkrad_cli_test(export_no_out 2 ARGS export ${PROJECT_SOURCE_DIR}/assets/cornell.json STDERR "^walkrad: .*--out")
+walkrad_cli_test(export_bad_extension 2 ARGS export ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/lit.obj
+                 STDERR "--out \".*lit.obj\": expected a .glb or .gltf file name" NO_FILE ${out}/lit.obj)
+walkrad_cli_test(export_missing_scene 2 ARGS export ${out}/no-such-scene.json --out ${out}/no/such/dir/lit.glb
+                 STDERR "no-such-scene.json: cannot read the file")
+walkrad_cli_test(export_truncated 2 ARGS export ${cli_dir}/truncated.json --out ${out}/trunc.glb
+                 STDERR "truncated.json:4:1: not valid JSON" NO_FILE ${out}/trunc.glb)
+walkrad_cli_test(export_unwritable 1 ARGS export ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/no/such/dir/lit.glb
+                 STDERR "lit.glb: cannot create")
+walkrad_cli_test(export_bad_exposure 2 ARGS export ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.glb --exposure -1
+                 STDERR "^walkrad: .*exposure")

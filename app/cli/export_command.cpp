@@ -1,0 +1,49 @@
+#include "app/cli/export_command.h"
+
+#include "app/image/atomic_file.h"
+#include "engine/display_mesh.h"
+#include "engine/gltf_export.h"
+#include "engine/lighting.h"
+#include "engine/meshed_scene.h"
+
+#include <chrono>
+#include <iostream>
+
+namespace app {
+
+namespace {
+
+bool endsWith(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+}  // namespace
+
+int runExport(const ExportOptions& options) {
+  const bool binary = endsWith(options.out, ".glb");
+  if (!binary && !endsWith(options.out, ".gltf")) {
+    std::cerr << "walkrad export: --out \"" << options.out << "\": expected a .glb or .gltf file name\n";
+    return 2;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const engine::Scene scene = loadForSolve(options.scene, {options.out}, options.solve.patchSize);
+
+  // Meshed and solved as `walkrad render` does, then the display's vertex radiance is baked.
+  const engine::MeshedScene meshed = engine::meshScene(scene);
+  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  radiosity::SolverSettings settings;
+  settings.graphicsProcessors = options.solve.threads;
+  radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
+  solveWithProgress(solver, options.solve, "export", "solved", start);
+  engine::displayRadiance(solver, mesh.radiance);
+
+  const double exposure = options.exposure.value_or(engine::autoExposure(mesh));
+  const std::string bytes = engine::exportGltf(scene, mesh, {.exposure = exposure, .binary = binary});
+  writeFileAtomically(options.out, bytes);
+  if (!options.solve.quiet)
+    std::cout << "walkrad export: " << options.out << ": " << bytes.size() << " bytes, " << mesh.triangleCount()
+              << " triangles, " << mesh.positions.size() << " vertices, exposure " << exposure << std::endl;
+  return 0;
+}
+
+}  // namespace app

@@ -1,0 +1,37 @@
+#include "app/cli/scene_solve.h"
+
+#include "app/image/atomic_file.h"
+#include "engine/lighting.h"
+#include "engine/scene_loader.h"
+
+#include <iostream>
+
+namespace app {
+
+engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs,
+                           const std::optional<double>& patchSize) {
+  engine::Scene scene = engine::loadScene(path);
+  for (const std::string& file : outputs)
+    if (!file.empty()) checkCanWrite(file);
+  if (patchSize)
+    for (engine::Surface& s : scene.surfaces) s.patchSize = *patchSize;
+  return scene;
+}
+
+uint64_t solveWithProgress(radiosity::Solver& solver, const SolveOptions& options, const std::string& command,
+                           const std::string& what, std::chrono::steady_clock::time_point start) {
+  using Clock = std::chrono::steady_clock;
+  auto lastReport = Clock::now();
+  const uint64_t shots = engine::solveTo(solver, options.converge, options.maxShots, [&](const radiosity::Solver& s, uint64_t n) {
+    if (options.quiet || std::chrono::duration<double>(Clock::now() - lastReport).count() < 1) return;
+    lastReport = Clock::now();
+    std::cout << "walkrad " << command << ": " << n << " shots, unshot " << 100 * s.unshotFraction() << "%" << std::endl;
+  });
+  if (!options.quiet)
+    std::cout << "walkrad " << command << ": " << what << " in " << std::chrono::duration<double>(Clock::now() - start).count()
+              << " s: " << shots << " shots, unshot " << 100 * solver.unshotFraction() << "%, " << solver.patchCount()
+              << " patches, " << solver.elementCount() << " elements" << std::endl;
+  return shots;
+}
+
+}  // namespace app

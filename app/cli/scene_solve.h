@@ -1,0 +1,36 @@
+// What `walkrad render` and `walkrad export` share: the scene loaded with the command's
+// overrides, and the solve with its progress lines.
+#pragma once
+
+#include "engine/scene.h"
+#include "radiosity/radiosity.h"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace app {
+
+struct SolveOptions {
+  std::optional<double> patchSize;  // none: the scene's
+  double converge = 0.01;           // shoot until the unshot fraction is below this
+  uint64_t maxShots = UINT64_MAX;   // or until this many shots
+  int threads = 1;                  // pxpl5 graphics processors
+  bool quiet = false;               // no progress lines (stdout)
+};
+
+// Loads the scene (SceneError for bad input), then checks that each non-empty `outputs` can be
+// written (std::runtime_error naming it): bad input is reported before an unwritable output,
+// and both before the long part. Applies the patch-size override.
+engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs,
+                           const std::optional<double>& patchSize);
+
+// Shoots until the options' convergence or shot limit (engine::solveTo). Unless quiet, prints
+// "walkrad COMMAND: N shots, unshot X%" about once a second and at the end "walkrad COMMAND:
+// WHAT in S s: ..." with the time since `start`. Returns the shots taken.
+uint64_t solveWithProgress(radiosity::Solver& solver, const SolveOptions& options, const std::string& command,
+                           const std::string& what, std::chrono::steady_clock::time_point start);
+
+}  // namespace app
