@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <span>
 #include <sstream>
 #include <tuple>
 #include <unordered_map>
@@ -324,13 +325,19 @@ class VertexIds {
  public:
   explicit VertexIds(double tolerance) : step_(tolerance) {}
   uint32_t operator()(const Vec3& p) {
-    const std::array<int64_t, 3> key{std::llround(p.x / step_), std::llround(p.y / step_), std::llround(p.z / step_)};
+    const Key key{std::llround(p.x / step_), std::llround(p.y / step_), std::llround(p.z / step_)};
     return ids_.try_emplace(key, static_cast<uint32_t>(ids_.size())).first->second;
   }
 
  private:
+  using Key = std::array<int64_t, 3>;
+  struct Hash {
+    size_t operator()(const Key& k) const {
+      return std::hash<int64_t>()(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
+    }
+  };
   double step_;
-  std::map<std::array<int64_t, 3>, uint32_t> ids_;
+  std::unordered_map<Key, uint32_t, Hash> ids_;
 };
 
 // Union-find over vertex ids, to gather open edges into openings.
@@ -339,8 +346,10 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
   return v;
 }
 
-void checkEdges(const Scene& scene, const std::vector<Face>& faces, double tolerance, double closedShare,
-                std::vector<Finding>& out) {
+// Finds inconsistent orientation and the openings of solids; returns per object whether it is
+// sealed: every edge used as often one way as the other (closed, consistently oriented shells).
+std::vector<bool> checkEdges(const Scene& scene, const std::vector<Face>& faces, double tolerance, double closedShare,
+                             std::vector<Finding>& out) {
   VertexIds ids(tolerance);
   // Per object, its edges by (lower id, higher id).
   std::vector<std::map<std::pair<uint32_t, uint32_t>, EdgeUse>> edges(scene.objects.size());
@@ -364,12 +373,15 @@ void checkEdges(const Scene& scene, const std::vector<Face>& faces, double toler
     for (const Ring3& hole : s.holes) ring(hole);
   }
 
+  std::vector<bool> sealed(scene.objects.size(), false);
   for (uint32_t o = 0; o < edges.size(); ++o) {
+    sealed[o] = !edges[o].empty();
     double total = 0, shared = 0;
     std::set<std::pair<uint32_t, uint32_t>> flipped;  // face pairs already reported
     for (const auto& [key, use] : edges[o]) {
       total += use.length;
       if (use.uses[0] + use.uses[1] >= 2) shared += use.length;
+      sealed[o] = sealed[o] && use.uses[0] == use.uses[1];
       // Two faces run along an edge the same way: one of them is turned over. The later one is
       // reported.
       for (size_t way : {0, 1})
@@ -416,6 +428,7 @@ void checkEdges(const Scene& scene, const std::vector<Face>& faces, double toler
                          number(100 * shared / total) + "% of whose edges are closed"});
     }
   }
+  return sealed;
 }
 
 // ---- backs seen ----
@@ -459,6 +472,11 @@ std::pair<int64_t, double> castRay(const FaceGrid& grid, const std::vector<Face>
       if (*f == self || stamp[*f] == ray) continue;
       stamp[*f] = ray;
       const Face& face = faces[*f];
+      // The face's plane first: most faces in a cell lie behind the start or beyond the best.
+      const double facing = glm::dot(face.normal, direction);
+      if (facing == 0) continue;
+      const double plane = (face.offset - glm::dot(face.normal, origin)) / facing;
+      if (plane < -tolerance || plane > bestT + tolerance) continue;
       for (uint32_t t = face.firstTriangle; t < face.firstTriangle + face.triangleCount; ++t) {
         const double hit = rayHit(origin, direction, triangles[t]);
         if (hit < -tolerance || hit > bestT + tolerance) continue;
@@ -574,10 +592,12 @@ std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& se
       }
 
   // Edges of objects: orientation and openings.
-  checkEdges(scene, faces, tolerance, settings.closedShare, out);
+  const std::vector<bool> sealed = checkEdges(scene, faces, tolerance, settings.closedShare, out);
 
-  // Backs seen: from a point inside each face, straight back and 45 degrees off it four ways,
-  // the first face met shows its front.
+  // Backs seen: from a point inside each face, straight back and, but for sealed objects, 45
+  // degrees off it four ways, the first face met shows its front. A sealed object's backs face
+  // its inside, seen only from something in there, which the straight ray meets; the slanted
+  // rays look out through openings (an open crate's sides are seen past its rim).
   std::vector<uint32_t> stamp(n, 0);
   uint32_t ray = 0;
   for (uint32_t f = 0; f < n; ++f) {
@@ -585,8 +605,10 @@ std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& se
     const Vec3 back = -faces[f].normal;
     const Vec3 t1 = glm::normalize(glm::cross(back, std::abs(back.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
     const Vec3 t2 = glm::cross(back, t1);
-    for (const Vec3& direction : {back, glm::normalize(back + t1), glm::normalize(back - t1), glm::normalize(back + t2),
-                                  glm::normalize(back - t2)}) {
+    const size_t rays = sealed[scene.surfaces[f].object] ? 1 : 5;
+    const Vec3 directions[] = {back, glm::normalize(back + t1), glm::normalize(back - t1), glm::normalize(back + t2),
+                               glm::normalize(back - t2)};
+    for (const Vec3& direction : std::span(directions, rays)) {
       const auto [hit, distance] =
           castRay(grid, faces, triangles, f, faces[f].inside, direction, tolerance, stamp, ++ray);
       if (hit < 0 || glm::dot(faces[hit].normal, direction) >= 0) continue;  // none, or a back

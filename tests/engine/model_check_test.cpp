@@ -1,6 +1,7 @@
 // Model checks: each kind of defect found at its place, and none of the serious kinds in the
 // shipped scenes.
 #include "engine/model_check.h"
+#include "engine/diagnostics.h"
 #include "engine/scene_loader.h"
 
 #include <glm/geometric.hpp>
@@ -215,6 +216,33 @@ TEST(ModelCheck, FindingsCarryTheirPlaceInTheFile) {
   for (const Finding& f : seen) {
     EXPECT_EQ(scene.surfaces[f.surface].face.rfind("side ", 0), 0u);
     EXPECT_EQ(scene.objects[scene.surfaces[static_cast<size_t>(f.other)].object].name, "room");
+  }
+}
+
+// What the findings say walkrad does is what the loader does: a duplicate and a coincident
+// face stay surfaces of their own after preprocessing (neither merged nor dropped), and a face
+// without area is refused by the scene loader.
+TEST(ModelCheck, ActionsAreWhatTheLoaderDoes) {
+  const std::string scene = R"({
+    "format": "walkrad-scene/1", "materials": { "white": { "reflectance": [0.5, 0.5, 0.5] } },
+    "objects": [
+      { "name": "a", "movable": false, "solids": [ { "profile": [[0, 0], [1, 0], [1, 1], [0, 1]], "from": 0, "to": 1, "material": "white" } ] },
+      { "name": "b", "movable": false, "solids": [ { "profile": [[0, 0], [1, 0], [1, 1], [0, 1]], "from": 0, "to": 1, "material": "white" } ] },
+      { "name": "c", "movable": false, "solids": [ { "profile": [[0, 0], [0.5, 0], [0.5, 0.5], [0, 0.5]], "from": 0, "to": 1, "material": "white" } ] } ] })";
+  Scene faces = parseSceneFaces(scene, "twice.json");
+  const auto found = checkModel(faces);
+  EXPECT_EQ(ofKind(found, FindingKind::DuplicateFace).size(), 6u);
+  EXPECT_FALSE(ofKind(found, FindingKind::CoincidentFaces).empty());
+  preprocessSurfaces(faces);
+  EXPECT_EQ(faces.surfaces.size(), 18u) << "every face is still there";
+
+  try {
+    parseSceneFaces(R"({ "format": "walkrad-scene/1", "materials": { "w": { "reflectance": [0.5, 0.5, 0.5] } },
+      "objects": [ { "name": "flat", "solids": [ { "profile": [[0, 0], [1, 0], [2, 0]], "from": 0, "to": 1, "material": "w" } ] } ] })",
+                    "flat.json");
+    ADD_FAILURE() << "a profile without area was loaded";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.diag(), Diag::Degenerate);
   }
 }
 
