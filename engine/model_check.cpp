@@ -100,9 +100,10 @@ struct Face {
 };
 
 // Newell's vector of a ring: its direction is the ring's normal, its length twice its area.
+// Taken about the first point, so rings far from the origin keep their digits.
 Vec3 newell(const Ring3& ring) {
   Vec3 sum{0};
-  for (size_t i = 0; i < ring.size(); ++i) sum += glm::cross(ring[i], ring[(i + 1) % ring.size()]);
+  for (size_t i = 1; i + 1 < ring.size(); ++i) sum += glm::cross(ring[i] - ring[0], ring[i + 1] - ring[0]);
   return sum;
 }
 
@@ -620,7 +621,8 @@ std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& se
   }
 
   std::stable_sort(out.begin(), out.end(), [](const Finding& x, const Finding& y) {
-    return std::tie(x.surface, x.kind) < std::tie(y.surface, y.kind);
+    const Severity sx = severityOf(x.kind), sy = severityOf(y.kind);
+    return std::tie(sx, x.surface, x.kind) < std::tie(sy, y.surface, y.kind);
   });
   return out;
 }

@@ -68,7 +68,8 @@ struct ModelCheckSettings {
 };
 
 // Checks `scene`'s surfaces as loadSceneFaces gives them (one per face: before coplanar merging,
-// which would hide duplicates and join faces) and returns the findings, ordered by surface.
+// which would hide duplicates and join faces) and returns the findings, errors first, then
+// warnings, then notes, each by surface.
 // Spatial hashing keeps it near-linear in the number of faces.
 std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& settings = {});
 
