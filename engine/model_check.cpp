@@ -327,8 +327,11 @@ class VertexIds {
   explicit VertexIds(double tolerance) : step_(tolerance) {}
   uint32_t operator()(const Vec3& p) {
     const Key key{std::llround(p.x / step_), std::llround(p.y / step_), std::llround(p.z / step_)};
-    return ids_.try_emplace(key, static_cast<uint32_t>(ids_.size())).first->second;
+    const auto [at, added] = ids_.try_emplace(key, static_cast<uint32_t>(ids_.size()));
+    if (added) positions_.push_back(p);
+    return at->second;
   }
+  const Vec3& position(uint32_t id) const { return positions_[id]; }
 
  private:
   using Key = std::array<int64_t, 3>;
@@ -339,7 +342,87 @@ class VertexIds {
   };
   double step_;
   std::unordered_map<Key, uint32_t, Hash> ids_;
+  std::vector<Vec3> positions_;  // by id: the first point given it
 };
+
+using EdgeKey = std::pair<uint32_t, uint32_t>;  // vertex ids, lower first
+
+// A stretch of an edge used by an odd number of faces, after T-junctions are resolved.
+struct OddEdge {
+  uint32_t uses = 0;
+  const EdgeUse* from = nullptr;  // the edge of a face it is part of
+  double length = 0;
+  Vec3 middle{0};
+};
+
+// The stretches of an object's edges that an odd number of faces use: the edges used an odd
+// number of times, split where a vertex of another such edge lies on them, so that an edge of
+// one face running along the edges of two others (a T-junction) is not taken for open. Only
+// odd edges are split: an edge used once each way is closed however its neighbours run.
+std::map<EdgeKey, OddEdge> oddEdges(const std::map<EdgeKey, EdgeUse>& edges, const VertexIds& ids, double tolerance) {
+  std::vector<std::pair<EdgeKey, const EdgeUse*>> odd;
+  std::vector<uint32_t> candidates;
+  for (const auto& [key, use] : edges)
+    if ((use.uses[0] + use.uses[1]) % 2 == 1) {
+      odd.push_back({key, &use});
+      candidates.push_back(key.first);
+      candidates.push_back(key.second);
+    }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+
+  // Candidates in a hashed grid of cells about the typical odd edge's length.
+  std::vector<double> lengths;
+  for (const auto& [key, use] : odd) lengths.push_back(use->length);
+  std::map<EdgeKey, OddEdge> out;
+  if (odd.empty()) return out;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+  const double cell = std::max(lengths[lengths.size() / 2], 4 * tolerance);
+  const auto cellOf = [&](const Vec3& p) {
+    return std::array<int64_t, 3>{static_cast<int64_t>(std::floor(p.x / cell)), static_cast<int64_t>(std::floor(p.y / cell)),
+                                  static_cast<int64_t>(std::floor(p.z / cell))};
+  };
+  std::map<std::array<int64_t, 3>, std::vector<uint32_t>> grid;
+  for (uint32_t v : candidates) grid[cellOf(ids.position(v))].push_back(v);
+
+  std::vector<std::pair<double, uint32_t>> cuts;
+  for (const auto& [key, use] : odd) {
+    const Vec3 a = ids.position(key.first), b = ids.position(key.second), d = b - a;
+    cuts.clear();
+    const auto consider = [&](uint32_t v) {
+      if (v == key.first || v == key.second) return;
+      const Vec3 p = ids.position(v);
+      const double t = glm::dot(p - a, d) / glm::dot(d, d);
+      if (t > 0 && t < 1 && glm::length(a + t * d - p) <= tolerance) cuts.push_back({t, v});
+    };
+    const auto lo = cellOf(glm::min(a, b) - Vec3(tolerance)), hi = cellOf(glm::max(a, b) + Vec3(tolerance));
+    const double cells = static_cast<double>(hi[0] - lo[0] + 1) * static_cast<double>(hi[1] - lo[1] + 1) *
+                         static_cast<double>(hi[2] - lo[2] + 1);
+    if (cells > static_cast<double>(candidates.size())) {
+      for (uint32_t v : candidates) consider(v);  // a long edge: every candidate is cheaper
+    } else {
+      for (int64_t x = lo[0]; x <= hi[0]; ++x)
+        for (int64_t y = lo[1]; y <= hi[1]; ++y)
+          for (int64_t z = lo[2]; z <= hi[2]; ++z)
+            if (const auto found = grid.find({x, y, z}); found != grid.end())
+              for (uint32_t v : found->second) consider(v);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    uint32_t from = key.first;
+    cuts.push_back({1, key.second});
+    for (const auto& [t, to] : cuts) {
+      if (to == from) continue;
+      OddEdge& piece = out[std::minmax(from, to)];
+      piece.uses += use->uses[0] + use->uses[1];
+      piece.from = use;
+      piece.length = glm::length(ids.position(to) - ids.position(from));
+      piece.middle = 0.5 * (ids.position(to) + ids.position(from));
+      from = to;
+    }
+  }
+  std::erase_if(out, [](const auto& piece) { return piece.second.uses % 2 == 0; });
+  return out;
+}
 
 // Union-find over vertex ids, to gather open edges into openings.
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
@@ -353,7 +436,7 @@ std::vector<bool> checkEdges(const Scene& scene, const std::vector<Face>& faces,
                              std::vector<Finding>& out) {
   VertexIds ids(tolerance);
   // Per object, its edges by (lower id, higher id).
-  std::vector<std::map<std::pair<uint32_t, uint32_t>, EdgeUse>> edges(scene.objects.size());
+  std::vector<std::map<EdgeKey, EdgeUse>> edges(scene.objects.size());
   for (uint32_t f = 0; f < faces.size(); ++f) {
     if (faces[f].degenerate) continue;
     const Surface& s = scene.surfaces[f];
@@ -377,11 +460,10 @@ std::vector<bool> checkEdges(const Scene& scene, const std::vector<Face>& faces,
   std::vector<bool> sealed(scene.objects.size(), false);
   for (uint32_t o = 0; o < edges.size(); ++o) {
     sealed[o] = !edges[o].empty();
-    double total = 0, shared = 0;
+    double total = 0;
     std::set<std::pair<uint32_t, uint32_t>> flipped;  // face pairs already reported
     for (const auto& [key, use] : edges[o]) {
       total += use.length;
-      if (use.uses[0] + use.uses[1] >= 2) shared += use.length;
       sealed[o] = sealed[o] && use.uses[0] == use.uses[1];
       // Two faces run along an edge the same way: one of them is turned over. The later one is
       // reported.
@@ -393,40 +475,40 @@ std::vector<bool> checkEdges(const Scene& scene, const std::vector<Face>& faces,
                            "runs along an edge of " + faceName(scene, first) + " the same way: their normals disagree"});
         }
     }
-    if (total <= 0 || shared < closedShare * total) continue;
-
-    // A solid with open edges: gather them into openings (connected runs of open edges).
-    std::vector<std::pair<const std::pair<uint32_t, uint32_t>*, const EdgeUse*>> open;
-    for (const auto& [key, use] : edges[o])
-      if ((use.uses[0] + use.uses[1]) % 2 == 1) open.push_back({&key, &use});
-    if (open.empty()) continue;
+    // A solid (most of its edges closed) with open edges: gather them into openings (connected
+    // runs of open edges).
+    const std::map<EdgeKey, OddEdge> open = oddEdges(edges[o], ids, tolerance);
+    double openLength = 0;
+    for (const auto& [key, piece] : open) openLength += piece.length;
+    const double closed = total > 0 ? 1 - openLength / total : 0;
+    if (open.empty() || closed < closedShare) continue;
     std::map<uint32_t, uint32_t> local;
-    for (const auto& [key, use] : open) {
-      local.try_emplace(key->first, static_cast<uint32_t>(local.size()));
-      local.try_emplace(key->second, static_cast<uint32_t>(local.size()));
+    for (const auto& [key, piece] : open) {
+      local.try_emplace(key.first, static_cast<uint32_t>(local.size()));
+      local.try_emplace(key.second, static_cast<uint32_t>(local.size()));
     }
     std::vector<uint32_t> parent(local.size());
     std::iota(parent.begin(), parent.end(), 0);
-    for (const auto& [key, use] : open) parent[findRoot(parent, local[key->first])] = findRoot(parent, local[key->second]);
+    for (const auto& [key, piece] : open) parent[findRoot(parent, local[key.first])] = findRoot(parent, local[key.second]);
     struct Opening {
       size_t edges = 0;
       double length = 0;
-      const EdgeUse* first = nullptr;
+      const OddEdge* first = nullptr;
     };
     std::map<uint32_t, Opening> openings;
-    for (const auto& [key, use] : open) {
-      Opening& opening = openings[findRoot(parent, local[key->first])];
+    for (const auto& [key, piece] : open) {
+      Opening& opening = openings[findRoot(parent, local[key.first])];
       ++opening.edges;
-      opening.length += use->length;
-      if (!opening.first) opening.first = use;
+      opening.length += piece.length;
+      if (!opening.first) opening.first = &piece;
     }
     for (const auto& [root, opening] : openings) {
-      const EdgeUse& use = *opening.first;
+      const EdgeUse& use = *opening.first->from;
       const uint32_t face = use.uses[0] > 0 ? use.faces[0][0] : use.faces[1][0];
-      out.push_back({FindingKind::OpenEdge, face, -1, use.middle,
+      out.push_back({FindingKind::OpenEdge, face, -1, opening.first->middle,
                      "an opening of " + std::to_string(opening.edges) + " edge" + (opening.edges == 1 ? "" : "s") +
                          " (" + number(opening.length) + " long) in object \"" + scene.objects[o].name + "\", " +
-                         number(100 * shared / total) + "% of whose edges are closed"});
+                         number(100 * closed) + "% of whose edges are closed"});
     }
   }
   return sealed;

@@ -176,6 +176,23 @@ TEST(ModelCheck, OpenEdgesOfASolidButNotOfASheet) {
   EXPECT_TRUE(checkModel(sheet.scene()).empty());
 }
 
+TEST(ModelCheck, TJunctionsAreNotOpenings) {
+  // The box's +z face in two halves: the long edges of its -y and +y faces meet the halves'
+  // corners at x = 1 (T-junctions), and the box is closed all the same.
+  FaceScene faces;
+  faces.box("crate", {0, 0, 0}, {2, 1, 1}).without("+z");
+  faces.face("crate", {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, "+z left");
+  FaceScene halfOpen = faces;
+  faces.face("crate", {{1, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}}, "+z right");
+  EXPECT_TRUE(checkModel(faces.scene()).empty());
+
+  // Without the right half the opening is its outline: the stretches of the long edges beyond
+  // the T-junctions and the left half's edge between them.
+  const auto found = ofKind(checkModel(halfOpen.scene()), FindingKind::OpenEdge);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NE(found[0].message.find("4 edges (4 long)"), std::string::npos) << found[0].message;
+}
+
 TEST(ModelCheck, FacadeIsAOneSidedWallSeenFromBehind) {
   // A room (closed, facing in) split by a one-sided partition facing -x: its back is seen
   // from the room's wall at x = 4.
