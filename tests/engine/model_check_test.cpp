@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <random>
 
 namespace engine {
 namespace {
@@ -290,6 +291,28 @@ TEST(ModelCheck, ShippedScenesFindingsAreTheKnownOnes) {
     if (f.kind != FindingKind::BackToBackFaces) {
       EXPECT_EQ(kitchen.objects[kitchen.surfaces[f.surface].object].name, "sink") << f.message;
     }
+  }
+}
+
+TEST(ModelCheck, RandomTrianglesAreCheckedWithoutTrouble) {
+  // Hostile input: triangles anywhere on a coarse lattice (so many touch, cross, coincide or
+  // collapse), a few of them repeated; every finding names faces that exist.
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> coordinate(0, 4);
+  const auto point = [&] { return Vec3(coordinate(random), coordinate(random), coordinate(random)); };
+  FaceScene faces;
+  for (int i = 0; i < 600; ++i) {
+    faces.face("soup " + std::to_string(i % 7), {point(), point(), point()});
+    if (i % 50 == 0) faces.face("soup 0", faces.scene().surfaces.back().outer);
+  }
+  const auto found = checkModel(faces.scene());
+  EXPECT_FALSE(ofKind(found, FindingKind::DegenerateFace).empty());
+  EXPECT_FALSE(ofKind(found, FindingKind::DuplicateFace).empty());
+  EXPECT_FALSE(ofKind(found, FindingKind::Interpenetration).empty());
+  for (const Finding& f : found) {
+    EXPECT_LT(f.surface, faces.scene().surfaces.size());
+    EXPECT_LT(f.other, static_cast<int64_t>(faces.scene().surfaces.size()));
+    EXPECT_TRUE(std::isfinite(f.point.x) && std::isfinite(f.point.y) && std::isfinite(f.point.z)) << f.message;
   }
 }
 
