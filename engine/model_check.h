@@ -17,7 +17,7 @@ namespace engine {
 // warnings may, notes are worth a look.
 #define WALKRAD_MODEL_FINDINGS(X)                                                                          \
   X(DegenerateFace, Error, "degenerate face",                                                           \
-    "nothing: a scene file refuses it when loading; an imported face without area has no light")         \
+    "refuses a scene file that has one (exit 2 when loading); delete it in the modeller")               \
   X(DuplicateFace, Error, "duplicate face",                                                             \
     "nothing: both are meshed, both are lit and they z-fight on screen; delete one in the modeller")     \
   X(CoincidentFaces, Warning, "coincident faces",                                                       \
@@ -27,7 +27,7 @@ namespace engine {
   X(Interpenetration, Warning, "interpenetrating faces",                                                \
     "nothing: each is meshed across the other, so light leaks along the crossing; split them in the modeller") \
   X(InconsistentOrientation, Error, "inconsistent orientation",                                         \
-    "nothing: one of the two faces points into its solid and is lit from inside; flip it in the modeller") \
+    "nothing: one of the two faces points into its solid, so from outside its back shows (not drawn, absorbing all light); flip it in the modeller") \
   X(OpenEdge, Warning, "open edges",                                                                     \
     "nothing: light passes through the opening; close it unless it is meant (an open window)")           \
   X(Facade, Warning, "back seen",                                                                        \

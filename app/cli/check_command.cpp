@@ -26,7 +26,7 @@ int runCheck(const CheckOptions& options) {
     const engine::Surface& s = scene.surfaces[f.surface];
     std::cout << scene.file << ": " << engine::describeLocation(scene, f) << ": "
               << engine::nameOf(engine::severityOf(f.kind)) << ": " << engine::nameOf(f.kind) << ": " << f.message
-              << "; walkrad does " << engine::actionOf(f.kind) << "\n";
+              << "; walkrad: " << engine::actionOf(f.kind) << "\n";
     nlohmann::ordered_json entry = {{"kind", engine::idOf(f.kind)},
                                     {"name", engine::nameOf(f.kind)},
                                     {"severity", engine::nameOf(engine::severityOf(f.kind))},

@@ -85,7 +85,7 @@ walkrad_cli_test(render_move_not_a_number 2 ARGS render ${PROJECT_SOURCE_DIR}/as
 # spec is exit 2, as for the other subcommands.
 walkrad_cli_test(check_help 0 ARGS check --help STDOUT "--json")
 walkrad_cli_test(check_cornell 0 ARGS check ${PROJECT_SOURCE_DIR}/assets/cornell.json --json ${out}/check-cornell.json
-                 STDOUT "cornell.json: objects\\[0\\]\\.solids\\[0\\] \\(room, [^)]*\\) at \\([^)]*\\): warning: open edges: an opening of 4 edges.*; walkrad does nothing: .*18 faces checked in [0-9.e-]+ ms: 1 finding \\(1 open edges\\)"
+                 STDOUT "cornell.json: objects\\[0\\]\\.solids\\[0\\] \\(room, [^)]*\\) at \\([^)]*\\): warning: open edges: an opening of 4 edges.*; walkrad: nothing: .*18 faces checked in [0-9.e-]+ ms: 1 finding \\(1 open edges\\)"
                  FILE ${out}/check-cornell.json)
 walkrad_cli_test(check_clean 0 ARGS check ${PROJECT_SOURCE_DIR}/assets/furnace.json STDOUT "6 faces checked in [0-9.e-]+ ms: 0 findings")
 walkrad_cli_test(check_missing 2 ARGS check ${out}/no-such-model.json STDERR "no-such-model.json: cannot read the file")
