@@ -10,6 +10,21 @@
 
 #include <iostream>
 
+namespace {
+
+// The options of the solve that `render` and `export` both run first.
+void addSolveOptions(CLI::App* command, app::SolveOptions& solve) {
+  command->add_option("--patch-size", solve.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
+  command->add_option("--converge", solve.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
+      ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
+  command->add_option("--max-shots", solve.maxShots, "stop after this many shots even if not converged");
+  command->add_option("--threads", solve.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
+      ->check(CLI::Range(1, 64));
+  command->add_flag("--quiet", solve.quiet, "no progress lines on stdout");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App cli{"walkrad: walk through a building lit by an adaptive radiosity solution"};
   cli.require_subcommand(1);
@@ -26,13 +41,7 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--stats", render.stats, "write statistics as JSON");
   renderCommand->add_option("--exposure", render.exposure, "radiance scale before sRGB (default: automatic)")
       ->check(CLI::PositiveNumber);
-  renderCommand->add_option("--patch-size", render.solve.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
-  renderCommand->add_option("--converge", render.solve.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
-      ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
-  renderCommand->add_option("--max-shots", render.solve.maxShots, "stop after this many shots even if not converged");
-  renderCommand->add_option("--threads", render.solve.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
-      ->check(CLI::Range(1, 64));
-  renderCommand->add_flag("--quiet", render.solve.quiet, "no progress lines on stdout");
+  addSolveOptions(renderCommand, render.solve);
   renderCommand->add_option("--move", render.moves, "after converging, move OBJECT by DX,DY,DZ and converge again (OBJECT:DX,DY,DZ; repeatable)")
       ->allow_extra_args(false);
 
@@ -68,13 +77,7 @@ int main(int argc, char** argv) {
   exportCommand->add_option("--out", exporting.out, "the glTF file: .glb (binary) or .gltf (text)")->required();
   exportCommand->add_option("--exposure", exporting.exposure, "radiance scale before clamping to COLOR_0 (default: automatic)")
       ->check(CLI::PositiveNumber);
-  exportCommand->add_option("--patch-size", exporting.solve.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
-  exportCommand->add_option("--converge", exporting.solve.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
-      ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
-  exportCommand->add_option("--max-shots", exporting.solve.maxShots, "stop after this many shots even if not converged");
-  exportCommand->add_option("--threads", exporting.solve.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
-      ->check(CLI::Range(1, 64));
-  exportCommand->add_flag("--quiet", exporting.solve.quiet, "no progress lines on stdout");
+  addSolveOptions(exportCommand, exporting.solve);
 
   try {
     cli.parse(argc, argv);
