@@ -87,6 +87,10 @@ walkrad_cli_test(check_help 0 ARGS check --help STDOUT "--json")
 walkrad_cli_test(check_cornell 0 ARGS check ${PROJECT_SOURCE_DIR}/assets/cornell.json --json ${out}/check-cornell.json
                  STDOUT "cornell.json: objects\\[0\\]\\.solids\\[0\\] \\(room, [^)]*\\) at \\([^)]*\\): warning: open edges: an opening of 4 edges.*; walkrad: nothing: .*18 faces checked in [0-9.e-]+ ms: 1 finding \\(1 open edges\\)"
                  FILE ${out}/check-cornell.json)
+# A scene with one of most defects: two boxes in one place, a post through a table, a one-sided
+# partition, a crate without a top.
+walkrad_cli_test(check_defects 0 ARGS check ${cli_dir}/model_defects.json
+                 STDOUT "37 faces checked in [0-9.e-]+ ms: 21 findings \\(6 duplicate face, 8 interpenetrating faces, 1 open edges, 6 back seen\\)")
 walkrad_cli_test(check_clean 0 ARGS check ${PROJECT_SOURCE_DIR}/assets/furnace.json STDOUT "6 faces checked in [0-9.e-]+ ms: 0 findings")
 walkrad_cli_test(check_missing 2 ARGS check ${out}/no-such-model.json STDERR "no-such-model.json: cannot read the file")
 walkrad_cli_test(check_truncated 2 ARGS check ${cli_dir}/truncated.json STDERR "truncated.json:4:1: not valid JSON")
