@@ -63,7 +63,7 @@ struct ModelCheckSettings {
   // Distances below this are zero (scene units); 0: 1e-6 of the scene's extent.
   double tolerance = 0;
   // An object counts as a solid (so its open edges are reported) when at least this share of its
-  // edge length is shared by two of its faces.
+  // edge length is closed: used by an even number of its faces, T-junctions resolved.
   double closedShare = 0.5;
 };
 
