@@ -1,5 +1,7 @@
 #include "mesher/balance.h"
 
+#include "mesher/quality_refinement.h"
+
 namespace mesher {
 
 namespace {
@@ -56,6 +58,7 @@ size_t balance(Quadtree& tree) {
 PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize) {
   PolygonTree built = buildPolygonTree(polygon, patchSize);
   balance(built.tree);
+  refineForQuality(built);
   built.tree.changes.clear();
   return built;
 }

@@ -2,6 +2,7 @@
 
 #include "mesher/balance.h"
 #include "mesher/leaf_emitter.h"
+#include "mesher/quality_refinement.h"
 #include "mesher/quadtree.h"
 
 #include <optional>
@@ -21,6 +22,7 @@ struct Mesher::State {
   PolygonTree built;
   std::vector<int32_t> leaves;
   std::optional<LeafEmitter> emitter;  // bound to `built`, made on first use
+  std::optional<QualityRefiner> refiner;  // the same
 };
 
 Mesher::Mesher() : state_(std::make_unique<State>()) {}
@@ -34,9 +36,12 @@ Mesh Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
 
 void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings, Mesh& out) {
   State& s = *state_;
-  // Phases of chapter 5: tree setup, edge storage and balancing; then leaf by leaf meshing.
+  // Phases of chapter 5: tree setup, edge storage and balancing, then splits of vertex leaves
+  // that would mesh below the angle bound; then leaf by leaf meshing.
   buildPolygonTree(polygon, settings.patchSize, s.built);
   balance(s.built.tree);
+  if (!s.refiner) s.refiner.emplace(s.built);
+  s.refiner->refine();
   s.built.tree.changes.clear();
   s.built.tree.leaves(s.leaves);
   if (s.emitter) s.emitter->reset(polygon, s.leaves.size());

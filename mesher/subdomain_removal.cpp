@@ -113,7 +113,7 @@ bool SubdomainRemover::fanFromInside(const std::vector<Vec2>& points, size_t rin
   return true;
 }
 
-bool SubdomainRemover::reachesBound() const {
+bool SubdomainRemover::trialReachesBound() const {
   for (const RingElement& e : trial_)
     for (uint8_t k = 0; k < e.count; ++k) {
       const uint32_t at = e.v[k];
@@ -160,12 +160,17 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
   best_.clear();
   double bestScore = -1;
   const size_t fewest = (n - 1) / 2;
-  auto done = [&] { return bestScore >= 1 && best_.size() <= fewest; };
+  auto done = [&] { return bestScore >= 1 && (firstGood_ || best_.size() <= fewest); };
   auto consider = [&](bool fanned) {
     const size_t count = trial_.size();
     if (!fanned || (bestScore >= 1 && count > best_.size())) return;
+    // Only asked whether some set is good: the first one ends the search, no score is needed.
+    if (firstGood_) {
+      if (trialReachesBound()) best_.swap(trial_), bestScore = 1;
+      return;
+    }
     // The first good set of the fewest elements ends the search: its score is not needed.
-    if (best_.empty() && count <= fewest && reachesBound()) {
+    if (best_.empty() && count <= fewest && trialReachesBound()) {
       best_.swap(trial_), bestScore = 1;
       return;
     }
@@ -195,6 +200,7 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   origin_.resize(points_.size());
   for (size_t i = 0; i < points_.size(); ++i) origin_[i] = i < n ? static_cast<int>(i) : -1;
   const double plain = search(n, preferredHinge, inner != nullptr, shapeScale);
+  score_ = plain;
 
   // Falling short, the ring may gain points on its stretch of the polygon's boundary (nothing
   // lies across it, so they make no T-vertex): the feet of the other ring points, so that a
@@ -207,6 +213,7 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
       if (origin_[i] == preferredHinge) hinge = static_cast<int>(i);
     const double augmented = search(m, hinge, inner != nullptr, shapeScale);
     if (augmented >= 1 || augmented > plain + 0.05) {
+      score_ = augmented;
       out.insert(out.end(), best_.begin(), best_.end());
       return;
     }
@@ -221,7 +228,17 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
     out.insert(out.end(), best_.begin(), best_.end());
     return;
   }
+  score_ = -1;
   earClipAndMerge(ring, out);
+}
+
+bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                                    size_t boundaryPoints) {
+  firstGood_ = true;
+  unused_.clear();
+  mesh(ring, preferredHinge, inner, shapeScale, unused_, boundaryPoints);
+  firstGood_ = false;
+  return score_ >= 1;
 }
 
 bool SubdomainRemover::augment(size_t n, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale) {

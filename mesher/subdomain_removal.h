@@ -38,6 +38,11 @@ class SubdomainRemover {
   const std::vector<Vec2>& points() const { return points_; }
   // Which ring point points()[i] is, or -1 for the inner point or an added one.
   int ringIndexOf(size_t i) const { return origin_[i]; }
+  // Whether mesh() would give elements that reach kAngleBoundDeg at every corner (or the ring's
+  // own corner there, when that is sharper); quicker than mesh(), as it stops at the first fan
+  // that does.
+  bool reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                    size_t boundaryPoints = 0);
 
  private:
   // Fans `points` (a ring, with the inner point appended when there is one) out from
@@ -59,14 +64,16 @@ class SubdomainRemover {
   // How close trial_ comes to the bound: 1 or more when every angle reaches what it can.
   double score() const;
   // Whether trial_ reaches the bound at every corner (score() >= 1), without angles.
-  bool reachesBound() const;
+  bool trialReachesBound() const;
 
   std::vector<Vec2> points_, shaped_;
   std::vector<double> reach_, tanReach_;
   std::vector<uint32_t> run_;
   std::vector<int> origin_;
   std::vector<double> feet_;
-  std::vector<RingElement> trial_, best_, kept_;
+  std::vector<RingElement> trial_, best_, kept_, unused_;
+  double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound
+  bool firstGood_ = false;  // the search stops at the first fan that reaches the bound
 };
 
 }  // namespace mesher

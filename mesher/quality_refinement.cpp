@@ -1,0 +1,77 @@
+#include "mesher/quality_refinement.h"
+
+#include "mesher/balance.h"
+
+#include <algorithm>
+
+namespace mesher {
+
+namespace {
+
+// A split may go deeper than one level where a child breaks a storage rule.
+void leavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out) {
+  if (tree[q].isLeaf()) {
+    out.push_back(q);
+    return;
+  }
+  for (int32_t c = 0; c < 4; ++c) leavesBelow(tree, tree[q].firstChild + c, out);
+}
+
+// Whether leaf q's vertex lies within a quarter of the leaf's size of a side, not on it: only
+// then is there a strip between them thin enough to fail (elsewhere the check would cost about
+// as much as meshing the leaf).
+bool nearASide(const Quadtree& tree, int32_t q) {
+  const Quadrant& leaf = tree[q];
+  const double s = static_cast<double>(tree.edgeLength(leaf));
+  const Vec2 v = (tree.input.vertices[static_cast<size_t>(leaf.vertex)] - Vec2{static_cast<double>(leaf.x), static_cast<double>(leaf.y)}) / s;
+  const double nearest = std::min({v.x, v.y, 1 - v.x, 1 - v.y});
+  return nearest > 0 && nearest < 0.25;
+}
+
+// How many levels below its leaf a vertex may be taken.
+constexpr int kDeeper = 2;
+
+}  // namespace
+
+bool QualityRefiner::reachesBound(int32_t q) {
+  const LeafRegion& region = regions_.build(q);
+  if (region.ring.empty()) return true;
+  ring_.clear();
+  for (const RegionPoint& p : region.ring) ring_.push_back(p.at);
+  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), region.pathPoints);
+}
+
+size_t QualityRefiner::refine() {
+  Quadtree& tree = built_.tree;
+  size_t splits = 0;
+  seeds_.clear();
+  tree.leaves(leaves_);
+  for (int32_t q : leaves_) {
+    if (tree[q].vertex < 0 || !nearASide(tree, q) || reachesBound(q)) continue;
+    // The vertex's leaf is split until it reaches the bound, a few levels at most; splits that
+    // do not get there (a vertex a hair from a grid line stays that close to it, relatively, for
+    // many levels) are taken back.
+    const size_t mark = tree.changes.size(), firstSeed = seeds_.size();
+    int32_t at = q;
+    bool reached = false;
+    for (int depth = 0; depth < kDeeper && !reached && tree.splitLeaf(at); ++depth) {
+      const size_t from = seeds_.size();
+      leavesBelow(tree, at, seeds_);
+      reached = true;
+      for (size_t i = from; i < seeds_.size(); ++i)
+        if (tree[seeds_[i]].vertex >= 0 && !reachesBound(seeds_[i])) reached = false, at = seeds_[i];
+    }
+    if (!reached) {
+      tree.undoChanges(mark);
+      seeds_.resize(firstSeed);
+      continue;
+    }
+    ++splits;
+  }
+  if (!seeds_.empty()) balanceAround(tree, seeds_);
+  return splits;
+}
+
+size_t refineForQuality(PolygonTree& built) { return QualityRefiner(built).refine(); }
+
+}  // namespace mesher

@@ -1,0 +1,38 @@
+// Refinement for element quality beyond the thesis, whose subdomain removal (5.4) leaves some
+// boundary patches badly shaped: a leaf holding an input vertex whose region no fan meshes with
+// every angle at kAngleBoundDeg is split. The typical case is a reflex corner close to a side:
+// the strip between them is too thin for any element on the long side beyond it; in a leaf half
+// the size the corner sits twice as far from the sides, relatively.
+#pragma once
+
+#include "mesher/leaf_region.h"
+#include "mesher/quadtree.h"
+#include "mesher/subdomain_removal.h"
+
+#include <vector>
+
+namespace mesher {
+
+// Splits the leaves of a complete and balanced tree whose input vertex's region falls short of
+// the bound (judged as LeafEmitter meshes it) when the vertex's leaf a few levels down reaches
+// it, then rebalances. Returns how many leaves were split. The refiner keeps its scratch memory
+// from polygon to polygon rebuilt into the same PolygonTree.
+class QualityRefiner {
+ public:
+  explicit QualityRefiner(PolygonTree& built) : built_(built), regions_(built.tree) {}
+  size_t refine();
+
+ private:
+  bool reachesBound(int32_t q);
+
+  PolygonTree& built_;
+  LeafRegionBuilder regions_;
+  SubdomainRemover remover_;
+  std::vector<int32_t> leaves_, seeds_;
+  std::vector<Vec2> ring_;
+};
+
+// QualityRefiner(built).refine().
+size_t refineForQuality(PolygonTree& built);
+
+}  // namespace mesher

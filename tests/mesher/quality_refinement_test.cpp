@@ -1,0 +1,79 @@
+// Splits for element quality beyond the thesis: vertex leaves that no fan meshes within the
+// angle bound get a smaller leaf when that helps, and only then.
+#include "mesher/quality_refinement.h"
+
+#include "mesher/balance.h"
+#include "mesher/mesh_check.h"
+#include "tests/mesher/mesh_expectations.h"
+#include "tests/mesher/random_polygons.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace mesher {
+namespace {
+
+// A square of 4 x 4 leaves of edge 4 with its upper right part cut away: the reflex corner lies
+// in leaf [4, 8]^2 at (fx, fy) of its edge. Near the lower side, the region left there is an L
+// whose thin arm leaves the long lower side no element above the bound. The other corners lie
+// on leaf sides, where nothing is split.
+PolygonWithHoles notchCornerIn(double fx, double fy) {
+  const double x = 4 + 4 * fx, y = 4 + 4 * fy;
+  return {{{0, 0}, {16, 0}, {16, y}, {x, y}, {x, 16}, {0, 16}}, {}};
+}
+
+// Whether the leaf holding the reflex corner meshes within the bound, as the emitter would.
+bool cornerLeafReachesBound(const PolygonTree& built) {
+  const Vec2 corner = built.tree.input.vertices[3];
+  LeafRegionBuilder regions(built.tree);
+  const LeafRegion& region = regions.build(built.tree.leafAt(corner));
+  std::vector<Vec2> ring;
+  for (const RegionPoint& p : region.ring) ring.push_back(p.at);
+  return SubdomainRemover().reachesBound(ring, region.hinge, &region.inner, built.frame.planePerTree(), region.pathPoints);
+}
+
+TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
+  const PolygonWithHoles polygon = notchCornerIn(0.8667, 0.1333);
+  PolygonTree built = buildPolygonTree(polygon, 4);
+  balance(built.tree);
+  ASSERT_FALSE(cornerLeafReachesBound(built));
+  EXPECT_GT(refineForQuality(built), 0u);
+  EXPECT_TRUE(cornerLeafReachesBound(built));
+
+  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {4}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
+// A corner a hair from a grid line stays that close to one, relatively, for more levels than
+// splitting may go: the tree is left as it was.
+TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
+  PolygonTree built = buildPolygonTree(notchCornerIn(0.8667, 1e-7), 4);
+  balance(built.tree);
+  ASSERT_FALSE(cornerLeafReachesBound(built));
+  const size_t leaves = built.tree.leaves().size();
+  EXPECT_EQ(refineForQuality(built), 0u);
+  EXPECT_EQ(built.tree.leaves().size(), leaves);
+}
+
+// The refined trees stay 2:1 balanced (AdaptiveMesh builds on them) and every vertex leaf that
+// was split reaches the bound.
+TEST(QualityRefinement, RefinedTreesStayBalanced) {
+  std::mt19937 random(31);
+  size_t splits = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE(trial);
+    const PolygonWithHoles polygon = trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial);
+    PolygonTree built = buildPolygonTree(polygon, 3 + trial % 17);
+    balance(built.tree);
+    splits += refineForQuality(built);
+    built.tree.changes.clear();
+    EXPECT_EQ(balance(built.tree), 0u);
+  }
+  EXPECT_GT(splits, 0u);
+}
+
+}  // namespace
+}  // namespace mesher
