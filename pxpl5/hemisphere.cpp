@@ -146,6 +146,7 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   // finishes, a run of equal items at a time, while the others still render.
   ProjectionInput input{&soup, localFrame(view), view.skipIds, st.settings.resolution};
   const bool hemisphere = st.settings.projection == Projection::kHemisphere;
+  const bool reference = st.settings.evaluator == Evaluator::kScalarReference;  // plain set-up and pixels
   for (std::vector<int64_t>& sums : st.sums)
     if (sums.size() < soup.polygons.size()) sums.resize(soup.polygons.size(), 0);
   const std::span<const uint32_t> itemPlane = st.machine.valuePlane();
@@ -173,7 +174,9 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   st.machine.renderFrame(
       soup.polygons.size(),
       [&](size_t begin, size_t end, Emitter& out) {
-        if (hemisphere)
+        if (hemisphere && reference)
+          setupHemisphereReference(input, begin, end, out);
+        else if (hemisphere)
           setupHemisphere(input, begin, end, out);
         else
           setupHemicube(input, begin, end, out);
