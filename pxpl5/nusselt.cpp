@@ -149,17 +149,19 @@ inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
 
   // localPolygon: the vertices in the local frame (v[most] is each lane's first vertex again),
   // Newell's normal, the centre, the extent and the plane's offset.
-  Lanes3 v[kMaxPolygonVertices + 1];
-  v[0] = Lanes3{};  // written below (every polygon has a vertex), which the compiler cannot see
-  for (int k = 0; k <= most; ++k) {
+  const auto localVertex = [&](int k) {
     const glm::vec3* w[kPolygonLanes];
     for (int l = 0; l < kPolygonLanes; ++l)
       w[l] = &soup.vertices[polygons[l].firstVertex + (static_cast<uint32_t>(k) < polygons[l].vertexCount ? static_cast<uint32_t>(k) : 0u)];
     static_assert(kPolygonLanes == 4);
     const Lanes3 world{{w[0]->x, w[1]->x, w[2]->x, w[3]->x}, {w[0]->y, w[1]->y, w[2]->y, w[3]->y}, {w[0]->z, w[1]->z, w[2]->z, w[3]->z}};
     const Lanes3 d{world.x - frame.origin.x, world.y - frame.origin.y, world.z - frame.origin.z};
-    v[k] = {dot(d, frame.x), dot(d, frame.y), dot(d, frame.z)};
-  }
+    return Lanes3{dot(d, frame.x), dot(d, frame.y), dot(d, frame.z)};
+  };
+  Lanes3 v[kMaxPolygonVertices + 1];
+  v[0] = localVertex(0);
+  for (int k = 1; k < most; ++k) v[k] = localVertex(k);
+  v[most] = v[0];
   Lanes3 normal{}, centre{};
   Lanes extent2{};
   for (int k = 0; k < most; ++k) {
@@ -185,7 +187,8 @@ inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
 
   // Directions on the unit sphere, bounds of the arcs and edge expressions.
   Lanes3 u[kMaxPolygonVertices + 1];
-  for (int k = 0; k <= most; ++k) u[k] = times(v[k], 1.0 / sqrtLanes(dot(v[k], v[k])));
+  for (int k = 0; k < most; ++k) u[k] = times(v[k], 1.0 / sqrtLanes(dot(v[k], v[k])));
+  u[most] = u[0];
   const Lanes orientation = select(offset > 0, Lanes{} + 1.0, Lanes{} - 1.0);
   Lanes xLo = Lanes{} + 1.0, xHi = Lanes{} - 1.0, yLo = Lanes{} + 1.0, yHi = Lanes{} - 1.0;
   LaneExpressions edges[kMaxPolygonVertices];
@@ -204,6 +207,17 @@ inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
     edges[k] = laneExpressions(grid, n);
   }
   const LaneExpressions depth = laneExpressions(grid, times(normal, 1.0 / offset));
+  // DiskGrid::pixels, lane by lane. The rectangles are stored well before they are passed on:
+  // made one lane at a time, each was built in a vector register, stored and reloaded at once
+  // in two halves, a store-forwarding stall.
+  PixelRect bounds[kPolygonLanes];
+  {
+    const Lanes x0 = (xLo - grid.first) * grid.perStep - 0.25, x1 = (xHi - grid.first) * grid.perStep + 0.25;
+    const Lanes y0 = (yLo - grid.first) * grid.perStep - 0.25, y1 = (yHi - grid.first) * grid.perStep + 0.25;
+    for (int l = 0; l < kPolygonLanes; ++l)
+      bounds[l] = {static_cast<int>(std::ceil(x0[l])), static_cast<int>(std::ceil(y0[l])), static_cast<int>(std::floor(x1[l])) + 1,
+                   static_cast<int>(std::floor(y1[l])) + 1};
+  }
 
   // Emitted in the polygons' order.
   for (int l = 0; l < kPolygonLanes; ++l) {
@@ -219,10 +233,7 @@ inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
       laneEdges[edgeCount++] = {e.a[l], e.b[l], e.c[l], 0, 0, 0, e.t[l]};
     }
     if (edgeCount == 0) continue;
-    PixelRect bounds;
-    grid.pixels(xLo[l], xHi[l], bounds.x0, bounds.x1);
-    grid.pixels(yLo[l], yHi[l], bounds.y0, bounds.y1);
-    out.convex(bounds, std::span(laneEdges, edgeCount), {depth.a[l], depth.b[l], depth.c[l], 0, 0, 0, depth.t[l]},
+    out.convex(bounds[l], std::span(laneEdges, edgeCount), {depth.a[l], depth.b[l], depth.c[l], 0, 0, 0, depth.t[l]},
                static_cast<uint32_t>(first) + static_cast<uint32_t>(l));
   }
 }
