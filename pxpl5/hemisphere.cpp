@@ -188,9 +188,16 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   frame.items = itemPlane;
   frame.factors.clear();
   const double scale = hemisphere ? st.diskShare : kWeightUnit;
-  for (size_t i = 0; i < soup.polygons.size(); ++i) {
-    int64_t sum = 0;
-    for (std::vector<int64_t>& sums : st.sums) sum += std::exchange(sums[i], 0);
+  // The renderers' sums into the first one's, in whole loops (this part runs on one thread).
+  const size_t polygons = soup.polygons.size();
+  int64_t* sums = st.sums[0].data();
+  for (size_t r = 1; r < st.sums.size(); ++r) {
+    int64_t* more = st.sums[r].data();
+    for (size_t i = 0; i < polygons; ++i) sums[i] += more[i];
+    std::fill_n(more, polygons, 0);
+  }
+  for (size_t i = 0; i < polygons; ++i) {
+    const int64_t sum = std::exchange(sums[i], 0);
     if (sum != 0) frame.factors.push_back({soup.polygons[i].id, static_cast<double>(sum) * scale});
   }
   const auto byId = [](const IdFactor& a, const IdFactor& b) { return a.id < b.id; };
