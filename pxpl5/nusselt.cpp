@@ -210,10 +210,14 @@ inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
   // DiskGrid::pixels, lane by lane. The rectangles are stored well before they are passed on:
   // made one lane at a time, each was built in a vector register, stored and reloaded at once
   // in two halves, a store-forwarding stall.
+  // Lanes not drawn here may hold anything (a culled polygon's infinities), which must not be
+  // converted to int: they are set to zero first.
   PixelRect bounds[kPolygonLanes];
   {
-    const Lanes x0 = (xLo - grid.first) * grid.perStep - 0.25, x1 = (xHi - grid.first) * grid.perStep + 0.25;
-    const Lanes y0 = (yLo - grid.first) * grid.perStep - 0.25, y1 = (yHi - grid.first) * grid.perStep + 0.25;
+    LaneMask unused = culled | below | crossing;
+    for (int l = 0; l < kPolygonLanes; ++l) unused[l] |= skipped[l] ? -1 : 0;
+    const auto pixels = [&](Lanes p) { return select(unused, Lanes{}, (p - grid.first) * grid.perStep); };
+    const Lanes x0 = pixels(xLo) - 0.25, x1 = pixels(xHi) + 0.25, y0 = pixels(yLo) - 0.25, y1 = pixels(yHi) + 0.25;
     for (int l = 0; l < kPolygonLanes; ++l)
       bounds[l] = {static_cast<int>(std::ceil(x0[l])), static_cast<int>(std::ceil(y0[l])), static_cast<int>(std::floor(x1[l])) + 1,
                    static_cast<int>(std::floor(y1[l])) + 1};
