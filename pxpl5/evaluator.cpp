@@ -130,10 +130,9 @@ template <int kEdges>
   Mask inArea[kRegionSize / kLanes];
   Floats t[kTerms];
   for (int r = 0; r < runs; ++r) {
-    Floats x;
     Mask xi;
     for (int l = 0; l < kLanes; ++l) xi[l] = lo + r * kLanes + l;
-    x = __builtin_convertvector(xi, Floats);
+    const Floats x = __builtin_convertvector(xi, Floats);
     for (int k = 0; k < kTerms; ++k) ax[k][r] = ex[k].a * x;
     inArea[r] = (xi >= area.x0) & (xi < area.x1);
   }
