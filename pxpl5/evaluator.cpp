@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
 
 namespace pxpl5 {
 
@@ -89,22 +90,53 @@ template <bool kQuadratic>
 // runs start at the area, not at a multiple of eight (a five-pixel row is one run, not two),
 // moved left where they would leave the region: another renderer may be writing the next one.
 // Same expressions, same bits (the zeros a stored linear expression leaves out add nothing: batch.h).
+//
+// Written in GCC's vector extension, a run one vector of eight floats (one AVX2 register, two
+// SSE2 ones in the baseline clone): left to the loop vectoriser, the same loop reloaded its
+// coefficients on every run and checked at run time that the depth row overlapped nothing.
 constexpr int kLanes = 8;
+using Floats = float __attribute__((vector_size(kLanes * sizeof(float))));
+using Lanes = uint32_t __attribute__((vector_size(kLanes * sizeof(uint32_t))));
+using Mask = int32_t __attribute__((vector_size(kLanes * sizeof(int32_t))));  // a comparison's all ones or zero
+
+// Every lane s (not 0 + s, which would make a negative zero positive).
+template <class V, class T>
+V splat(T s) {
+  V v;
+  for (int l = 0; l < kLanes; ++l) v[l] = s;
+  return v;
+}
+template <class V, class T>
+V loadRun(const T* at) {
+  V v;
+  std::memcpy(&v, at, sizeof v);
+  return v;
+}
+template <class V, class T>
+void storeRun(T* at, const V& v) {
+  std::memcpy(at, &v, sizeof v);
+}
 
 template <int kEdges>
 [[gnu::always_inline]] inline void evaluateRowsFused(const SetupPrimitive& primitive, const LinearExpression* ex, PixelRect area,
                                                      const PixelMemory& memory, EvaluatorStats& stats) {
   constexpr int kTerms = kEdges + 1;  // the edges, then the depth
-  const uint32_t value = primitive.value;
   const int width = (area.x1 - area.x0 + kLanes - 1) & ~(kLanes - 1);  // a multiple of kLanes: no remainder
+  const int runs = width / kLanes;
   const int regionEnd = (area.x0 & ~(kRegionSize - 1)) + kRegionSize;
   const int lo = std::min(area.x0, regionEnd - width);
-  // What is the same on every row: each lane's a*x and whether it lies in the area.
-  alignas(64) float ax[kTerms][kRegionSize];
-  for (int k = 0; k < kTerms; ++k)
-    for (int i = 0; i < width; ++i) ax[k][i] = ex[k].a * static_cast<float>(lo + i);
-  alignas(64) uint32_t inArea[kRegionSize];
-  for (int i = 0; i < width; ++i) inArea[i] = lo + i >= area.x0 && lo + i < area.x1 ? ~0u : 0u;
+  // What is the same on every row: each lane's a*x, whether it lies in the area, each t.
+  Floats ax[kTerms][kRegionSize / kLanes];
+  Mask inArea[kRegionSize / kLanes];
+  Floats t[kTerms];
+  for (int r = 0; r < runs; ++r) {
+    Mask xi;
+    for (int l = 0; l < kLanes; ++l) xi[l] = lo + r * kLanes + l;
+    const Floats x = __builtin_convertvector(xi, Floats);
+    for (int k = 0; k < kTerms; ++k) ax[k][r] = ex[k].a * x;
+    inArea[r] = (xi >= area.x0) & (xi < area.x1);
+  }
+  for (int k = 0; k < kTerms; ++k) t[k] = splat<Floats>(ex[k].t);
   // Ask for the rows' pixel memory at once: they lie a stride apart, which the hardware
   // prefetcher does not foresee, and their misses then overlap instead of stalling row by row.
   // A row's first line only: most rows are short, and asking for the last as well cost as much
@@ -115,27 +147,28 @@ template <int kEdges>
     __builtin_prefetch(memory.depth + rowStart, 1);
     __builtin_prefetch(memory.value + rowStart, 1);
   }
-  // Pixels written, counted per lane and added up once.
-  alignas(32) uint32_t won[kLanes] = {};
+  const Lanes value = splat<Lanes>(primitive.value);
+  Lanes won{};  // pixels written, counted per lane and added up once
+  // The planes as locals: the stores could alias `memory`, whose pointers would be reloaded.
+  const float* const termPlane = memory.term;
+  float* const depthPlane = memory.depth;
+  uint32_t* const valuePlane = memory.value;
   for (int y = area.y0; y < area.y1; ++y) {
     const float fy = static_cast<float>(y);
-    float rowC[kTerms];
-    for (int k = 0; k < kTerms; ++k) rowC[k] = ex[k].b * fy + ex[k].c;
+    Floats rowC[kTerms];
+    for (int k = 0; k < kTerms; ++k) rowC[k] = splat<Floats>(ex[k].b * fy + ex[k].c);
     const size_t rowStart = static_cast<size_t>(y) * static_cast<size_t>(memory.stride) + static_cast<size_t>(lo);
-    const float* __restrict term = memory.term + rowStart;
-    float* __restrict depth = memory.depth + rowStart;
-    uint32_t* __restrict values = memory.value + rowStart;
-    for (int run = 0; run < width; run += kLanes) {
-      for (int l = 0; l < kLanes; ++l) {
-        const int i = run + l;
-        uint32_t on = inArea[i];
-        for (int k = 0; k < kEdges; ++k) on &= (ax[k][i] + rowC[k]) + ex[k].t * term[i] >= 0 ? ~0u : 0u;
-        const float w = (ax[kEdges][i] + rowC[kEdges]) + ex[kEdges].t * term[i];
-        const uint32_t wins = on & (w > depth[i] ? ~0u : 0u);
-        depth[i] = std::bit_cast<float>((std::bit_cast<uint32_t>(w) & wins) | (std::bit_cast<uint32_t>(depth[i]) & ~wins));
-        values[i] = (value & wins) | (values[i] & ~wins);
-        won[l] += wins & 1u;
-      }
+    for (int r = 0; r < runs; ++r) {
+      const size_t at = rowStart + static_cast<size_t>(r * kLanes);
+      const Floats term = loadRun<Floats>(termPlane + at);
+      Mask on = inArea[r];
+      for (int k = 0; k < kEdges; ++k) on &= (ax[k][r] + rowC[k]) + t[k] * term >= 0;
+      const Floats w = (ax[kEdges][r] + rowC[kEdges]) + t[kEdges] * term;
+      const Floats depth = loadRun<Floats>(depthPlane + at);
+      const Mask wins = on & (w > depth);
+      storeRun(depthPlane + at, wins ? w : depth);
+      storeRun(valuePlane + at, wins ? value : loadRun<Lanes>(valuePlane + at));
+      won -= reinterpret_cast<const Lanes&>(wins);  // all ones (-1) where it wins
     }
   }
   for (int l = 0; l < kLanes; ++l) stats.written += won[l];

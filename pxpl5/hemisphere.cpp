@@ -88,6 +88,9 @@ struct HemisphereRenderer::State {
   std::vector<float> weights;
   std::vector<std::vector<int64_t>> sums;  // per renderer, per polygon index; zero between frames
   double diskShare = 0;                    // the weight of every disk pixel (hemisphere projection)
+  // Per row, the pixels [weightedBegin, weightedEnd) from the first to the last of weight > 0:
+  // the per-id sums skip the rest (outside the disk, never written), a fifth of the disk's square.
+  std::vector<int> weightedBegin, weightedEnd;
   HemisphereFrame frame;
 
   State(const HemisphereSettings& s, const MachineSettings& m)
@@ -130,6 +133,14 @@ HemisphereRenderer::HemisphereRenderer(const HemisphereSettings& settings)
   st.frame.width = st.machine.settings().width;
   st.frame.height = st.machine.settings().height;
   st.frame.stride = st.machine.pixelStride();
+  for (int y = 0; y < st.frame.height; ++y) {
+    const float* row = st.weights.data() + static_cast<size_t>(y) * static_cast<size_t>(st.frame.stride);
+    int begin = 0, end = st.frame.width;
+    while (begin < end && !(row[begin] > 0)) ++begin;
+    while (end > begin && !(row[end - 1] > 0)) --end;
+    st.weightedBegin.push_back(begin);
+    st.weightedEnd.push_back(end);
+  }
 }
 
 HemisphereRenderer::~HemisphereRenderer() = default;
@@ -146,6 +157,7 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   // finishes, a run of equal items at a time, while the others still render.
   ProjectionInput input{&soup, localFrame(view), view.skipIds, st.settings.resolution};
   const bool hemisphere = st.settings.projection == Projection::kHemisphere;
+  const bool reference = st.settings.evaluator == Evaluator::kScalarReference;  // plain set-up and pixels
   for (std::vector<int64_t>& sums : st.sums)
     if (sums.size() < soup.polygons.size()) sums.resize(soup.polygons.size(), 0);
   const std::span<const uint32_t> itemPlane = st.machine.valuePlane();
@@ -155,10 +167,11 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
     for (int y = region.y0; y < region.y1; ++y) {
       const uint32_t* items = itemPlane.data() + static_cast<size_t>(y) * stride;
       const float* weights = st.weights.data() + static_cast<size_t>(y) * stride;
-      for (int x = region.x0; x < region.x1;) {
+      const int x1 = std::min(region.x1, st.weightedEnd[static_cast<size_t>(y)]);
+      for (int x = std::max(region.x0, st.weightedBegin[static_cast<size_t>(y)]); x < x1;) {
         const uint32_t item = items[x];
         int runEnd = x + 1;
-        while (runEnd < region.x1 && items[runEnd] == item) ++runEnd;
+        while (runEnd < x1 && items[runEnd] == item) ++runEnd;
         if (item != kNoValue) {
           if (hemisphere) {
             sums[item] += runEnd - x;
@@ -173,7 +186,9 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   st.machine.renderFrame(
       soup.polygons.size(),
       [&](size_t begin, size_t end, Emitter& out) {
-        if (hemisphere)
+        if (hemisphere && reference)
+          setupHemisphereReference(input, begin, end, out);
+        else if (hemisphere)
           setupHemisphere(input, begin, end, out);
         else
           setupHemicube(input, begin, end, out);
@@ -185,9 +200,16 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
   frame.items = itemPlane;
   frame.factors.clear();
   const double scale = hemisphere ? st.diskShare : kWeightUnit;
-  for (size_t i = 0; i < soup.polygons.size(); ++i) {
-    int64_t sum = 0;
-    for (std::vector<int64_t>& sums : st.sums) sum += std::exchange(sums[i], 0);
+  // The renderers' sums into the first one's, in whole loops (this part runs on one thread).
+  const size_t polygons = soup.polygons.size();
+  int64_t* sums = st.sums[0].data();
+  for (size_t r = 1; r < st.sums.size(); ++r) {
+    int64_t* more = st.sums[r].data();
+    for (size_t i = 0; i < polygons; ++i) sums[i] += more[i];
+    std::fill_n(more, polygons, 0);
+  }
+  for (size_t i = 0; i < polygons; ++i) {
+    const int64_t sum = std::exchange(sums[i], 0);
     if (sum != 0) frame.factors.push_back({soup.polygons[i].id, static_cast<double>(sum) * scale});
   }
   const auto byId = [](const IdFactor& a, const IdFactor& b) { return a.id < b.id; };

@@ -38,7 +38,7 @@ struct HemisphereSettings {
   int resolution = 256;  // pixels across the base disk or the hemicube's top face (even, >= 8)
   Projection projection = Projection::kHemisphere;
   int graphicsProcessors = 1;  // threads; the results do not depend on it
-  Evaluator evaluator = Evaluator::kVector;
+  Evaluator evaluator = Evaluator::kVector;  // kScalarReference: also the plain set-up, one polygon at a time
 };
 
 struct Viewpoint {

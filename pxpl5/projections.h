@@ -40,7 +40,10 @@ int clipToHalfSpace(const glm::dvec3* in, int n, const glm::dvec3& k, glm::dvec3
 // dot(normal, q) (positive when the winding is counter-clockwise seen from the point).
 int localPolygon(const ProjectionInput& in, size_t index, glm::dvec3* v, glm::dvec3& normal, double& offset);
 
+// The hemisphere's set-up: vectorised over polygons, and its plain reference, one polygon at a
+// time; they emit the same primitives, bit for bit.
 void setupHemisphere(const ProjectionInput& in, size_t begin, size_t end, Emitter& out);
+void setupHemisphereReference(const ProjectionInput& in, size_t begin, size_t end, Emitter& out);
 void setupHemicube(const ProjectionInput& in, size_t begin, size_t end, Emitter& out);
 
 // Screen size of each projection, and its per-pixel planes: the stored term and clear depth in

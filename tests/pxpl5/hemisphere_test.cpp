@@ -1,6 +1,7 @@
 // Form factors from the emulated machine against closed forms: Lambert's contour formula for
 // unoccluded polygons, a closed box, occlusion, the horizon, tiny and huge polygons, threads.
 #include "pxpl5/hemisphere.h"
+#include "pxpl5/projections.h"
 
 #include "tests/pxpl5/scenes.h"
 
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <cstdio>
 #include <random>
@@ -279,6 +281,66 @@ TEST(Pxpl5Hemisphere, SameAnswerForOneTwoAndEightThreadsAndForTheReference) {
         EXPECT_EQ(got.factors[i].factor, expected.factors[i].factor);
       }
     }
+  }
+}
+
+// Polygons of 3 to 8 vertices in random order (the vector set-up's lanes then mix vertex
+// counts), some with a repeated vertex, some through the viewpoint's plane, many across its
+// horizon, all around the point.
+Soup mixedPolygons(int count, uint32_t seed) {
+  Soup soup;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> u(-3, 3), unit(0, 1);
+  for (int i = 0; i < count; ++i) {
+    const glm::vec3 c{u(random), u(random), u(random)};
+    const glm::vec3 s = glm::vec3{u(random), u(random), u(random)} * 0.1f, t = glm::vec3{u(random), u(random), u(random)} * 0.1f;
+    const int n = 3 + static_cast<int>(unit(random) * 6);
+    std::vector<glm::vec3> ring;
+    for (int k = 0; k < n; ++k) {
+      const float angle = 6.2831853f * static_cast<float>(k) / static_cast<float>(n);
+      ring.push_back(c + s * std::cos(angle) + t * std::sin(angle));
+    }
+    if (i % 11 == 0) ring[1] = ring[0];                          // a repeated vertex
+    if (i % 13 == 0) for (glm::vec3& q : ring) q.z = 0.3f;       // in the plane of the point below
+    soup.add(ring, static_cast<uint32_t>(i));
+  }
+  return soup;
+}
+
+TEST(Pxpl5Hemisphere, VectorSetUpEmitsTheReferencesPrimitives) {
+  Viewpoint roomView;
+  const Soup room = test::benchmarkRoom(3000, roomView);
+  const Soup mixed = mixedPolygons(4001, 11);
+  const uint32_t skip[] = {5, 6, 40};
+  struct Case {
+    const Soup* soup;
+    Viewpoint view;
+  };
+  const Case cases[] = {{&room, roomView}, {&mixed, {{0.1f, 0.2f, 0.3f}, {0.3f, -0.2f, 1}, {}}},
+                        {&mixed, {{0, 0, 0.3f}, {0, 0, 1}, skip}}, {&mixed, {{-0.5f, 0.4f, 0}, {-1, 0.5f, 0.2f}, {}}}};
+  for (const Case& c : cases) {
+    const PolygonSoup soup = c.soup->view();
+    const ProjectionInput input{&soup, localFrame(c.view), c.view.skipIds, 256};
+    // Batches of 37 polygons: groups of four and a remainder, at every offset.
+    Machine vector({256, 256, 1, Evaluator::kVector}), reference({256, 256, 1, Evaluator::kVector});
+    std::vector<float> weights;
+    loadHemispherePlanes(vector, 256, weights);
+    loadHemispherePlanes(reference, 256, weights);
+    vector.renderFrame(soup.polygons.size(), [&](size_t begin, size_t end, Emitter& out) { setupHemisphere(input, begin, end, out); }, 37);
+    reference.renderFrame(soup.polygons.size(), [&](size_t begin, size_t end, Emitter& out) { setupHemisphereReference(input, begin, end, out); },
+                          37);
+    // Every primitive's bounds and stream (the ring's counts) and every pixel's winner and depth.
+    const FrameCounters& a = vector.counters();
+    const FrameCounters& b = reference.counters();
+    EXPECT_GT(a.primitivesOut, soup.polygons.size() / 4);
+    EXPECT_EQ(a.primitivesOut, b.primitivesOut);
+    EXPECT_EQ(a.regionPrimitives, b.regionPrimitives);
+    EXPECT_EQ(a.instructions, b.instructions);
+    EXPECT_EQ(a.ringBytes, b.ringBytes);
+    EXPECT_EQ(a.emulatedPixelOps, b.emulatedPixelOps);
+    EXPECT_EQ(a.pixelsWritten, b.pixelsWritten);
+    ASSERT_TRUE(std::equal(vector.valuePlane().begin(), vector.valuePlane().end(), reference.valuePlane().begin()));
+    ASSERT_EQ(std::memcmp(vector.depthPlane().data(), reference.depthPlane().data(), vector.depthPlane().size_bytes()), 0);
   }
 }
 
