@@ -12,9 +12,12 @@ void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& ou
 }
 
 uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
-                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress) {
+                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress,
+                 MeshAdaptation* adaptation) {
   uint64_t shots = 0;
-  while (shots < maxShots && !solver.converged(converge) && solver.step()) {
+  while (shots < maxShots) {
+    if (adaptation && adaptation->adaptIfDue(solver, converge)) continue;
+    if (solver.converged(converge) || !solver.step()) break;
     ++shots;
     if (progress) progress(solver, shots);
   }

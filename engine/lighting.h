@@ -3,6 +3,7 @@
 // radiance; the UI takes the newest one without ever waiting for a shot.
 #pragma once
 
+#include "engine/mesh_adaptation.h"
 #include "radiosity/radiosity.h"
 
 #include <glm/vec3.hpp>
@@ -24,9 +25,12 @@ namespace engine {
 void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out);
 
 // Shoots until the unshot fraction is at most `converge` or `maxShots` shots were taken, calling
-// `progress` (when given) after every shot; returns the shots taken.
+// `progress` (when given) after every shot; returns the shots taken. With `adaptation` (whose
+// input() the solver has), its passes run when due, and shooting goes on after each that
+// changed a mesh until one at convergence changes none.
 uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
-                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress = {});
+                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress = {},
+                 MeshAdaptation* adaptation = nullptr);
 
 // Takes a scene edit into a solution: `surfaces` (the same surfaces in the same order, some moved,
 // some meshed again) replace the solver's, whose light is corrected rather than shot again
