@@ -8,6 +8,23 @@
 
 #include <iostream>
 
+namespace {
+
+void addAdaptOptions(CLI::App& command, app::AdaptOptions& options) {
+  CLI::Option* threshold =
+      command.add_option("--adapt-threshold", options.threshold,
+                         "refine elements whose luminance differs from a neighbour's by more than this fraction of "
+                         "their mean (turns adaptive refinement on; default 0.25 or the scene's settings.adaptive)")
+          ->check(CLI::PositiveNumber & CLI::Range(0.0, 10.0));
+  CLI::Option* size = command.add_option("--min-element", options.minElementSize,
+                                         "refine no element into parts narrower than this, in scene units (turns "
+                                         "adaptive refinement on; default a quarter of the patch size)")
+                          ->check(CLI::PositiveNumber);
+  command.add_flag("--no-adapt", options.off, "no adaptive refinement, whatever the scene says")->excludes(threshold)->excludes(size);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App cli{"walkrad: walk through a building lit by an adaptive radiosity solution"};
   cli.require_subcommand(1);
@@ -33,6 +50,7 @@ int main(int argc, char** argv) {
   renderCommand->add_flag("--quiet", render.quiet, "no progress lines on stdout");
   renderCommand->add_option("--move", render.moves, "after converging, move OBJECT by DX,DY,DZ and converge again (OBJECT:DX,DY,DZ; repeatable)")
       ->allow_extra_args(false);
+  addAdaptOptions(*renderCommand, render.adapt);
 
   app::ViewOptions view;
   CLI::App* viewCommand = cli.add_subcommand("view", "open the walkthrough window (GLFW + Dear ImGui)");
@@ -46,6 +64,7 @@ int main(int argc, char** argv) {
   viewCommand->add_option("--threads", view.lighting.solver.graphicsProcessors,
                           "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
       ->check(CLI::Range(1, 64));
+  addAdaptOptions(*viewCommand, view.adapt);
 
   app::MeshOptions mesh;
   CLI::App* meshCommand = cli.add_subcommand("mesh", "mesh a scene or a polygon case and print statistics");

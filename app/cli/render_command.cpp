@@ -5,6 +5,7 @@
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
 #include "engine/lighting.h"
+#include "engine/mesh_adaptation.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_editor.h"
 #include "engine/scene_loader.h"
@@ -95,14 +96,19 @@ int runRender(const RenderOptions& options) {
   start = Clock::now();
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = options.threads;
-  auto solver = std::make_unique<radiosity::Solver>(engine::radiosityInput(editor.scene(), editor.meshed()), settings);
+  // With adaptive refinement the solver lights the adaptation's meshes, which follow the light.
+  std::unique_ptr<engine::MeshAdaptation> adaptation;
+  if (const auto adaptive = adaptiveSettings(options.adapt, editor.scene()))
+    adaptation = std::make_unique<engine::MeshAdaptation>(editor.scene(), editor.meshed(), *adaptive);
+  auto solver = std::make_unique<radiosity::Solver>(
+      adaptation ? adaptation->input() : engine::radiosityInput(editor.scene(), editor.meshed()), settings);
   auto lastReport = start;
   const auto solve = [&](const char* what) {
     const uint64_t shots = engine::solveTo(*solver, options.converge, options.maxShots, [&](const radiosity::Solver& s, uint64_t n) {
       if (options.quiet || std::chrono::duration<double>(Clock::now() - lastReport).count() < 1) return;
       lastReport = Clock::now();
       std::cout << "walkrad render: " << n << " shots, unshot " << 100 * s.unshotFraction() << "%" << std::endl;
-    });
+    }, adaptation.get());
     if (!options.quiet)
       std::cout << "walkrad render: " << what << " in " << millisecondsSince(start) / 1000 << " s: " << shots
                 << " shots, unshot " << 100 * solver->unshotFraction() << "%, " << solver->patchCount() << " patches, "
@@ -121,7 +127,13 @@ int runRender(const RenderOptions& options) {
     engine::ObjectPose pose = engine::poseOf(editor.scene().objects[move.object]);
     pose.position += move.offset;
     editor.setPose(move.object, pose);
-    std::vector<radiosity::Surface> input = engine::radiosityInput(editor.scene(), editor.meshed());
+    std::vector<radiosity::Surface> input;
+    if (adaptation) {
+      adaptation->edit(editor.scene(), editor.meshed());
+      input = adaptation->input();
+    } else {
+      input = engine::radiosityInput(editor.scene(), editor.meshed());
+    }
     const double remeshMs = millisecondsSince(start);
     engine::applyEdit(solver, input, settings);
     const bool first = solver->step();  // the first relit solution a display could show
@@ -144,7 +156,8 @@ int runRender(const RenderOptions& options) {
                          {"shots", solver->stats().shots},
                          {"unshot_fraction", solver->unshotFraction()}});
   }
-  if (!moves.empty()) mesh = engine::displayMesh(editor.meshed());
+  if (adaptation) mesh = engine::displayMesh(adaptation->meshed());
+  else if (!moves.empty()) mesh = engine::displayMesh(editor.meshed());
   engine::displayRadiance(*solver, mesh.radiance);
   const engine::Scene& scene = editor.scene();
 
@@ -174,6 +187,7 @@ int runRender(const RenderOptions& options) {
         {"exposure", exposure},
     };
     if (!moves.empty()) stats["moves"] = moveStats;
+    if (adaptation) stats["adaptive_passes"] = adaptation->passes();
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   return 0;

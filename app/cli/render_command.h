@@ -1,6 +1,8 @@
 // `walkrad render`: a headless image of a scene (spec/cli.md).
 #pragma once
 
+#include "app/cli/adapt_options.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +25,7 @@ struct RenderOptions {
   int threads = 1;                 // pxpl5 graphics processors
   bool quiet = false;              // no progress lines (stdout)
   std::vector<std::string> moves;  // OBJECT:DX,DY,DZ, applied in order after converging
+  AdaptOptions adapt;              // adaptive refinement while solving
 };
 
 // Runs the command; returns the process exit code (0, 2 for bad input, 1 otherwise), having
