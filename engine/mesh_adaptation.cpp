@@ -112,7 +112,12 @@ bool MeshAdaptation::adaptIfDue(radiosity::Solver& solver, double converge) {
   if (solver.pendingCorrections() > 0) return false;
   const double fraction = solver.unshotFraction();
   const bool converged = fraction <= converge;
-  if (converged ? convergedPasses_ >= kMaxConvergedPasses : (nextPassAt_ <= 0 || fraction > nextPassAt_)) return false;
+  if (nextPassAt_ < 0) {
+    // The first call after an edit whose take-backs are done: passes from this light on.
+    nextPassAt_ = kPassFall * fraction;
+    return false;
+  }
+  if (converged ? convergedPasses_ >= kMaxConvergedPasses : fraction > nextPassAt_) return false;
   const bool changed = pass(solver) > 0;
   if (converged) convergedPasses_ = changed ? convergedPasses_ + 1 : kMaxConvergedPasses;
   // From the light before the pass: the pass's take-backs count as unshot until done, and may
@@ -133,8 +138,8 @@ void MeshAdaptation::edit(const Scene& scene, const MeshedScene& meshed) {
   }
   scene_ = scene;
   for (size_t s = 0; s < scene.surfaces.size(); ++s) input_[s] = radiosityInput(scene_, meshed_, s);
-  // Until the light has settled its gradients are the edit's, not the scene's.
-  nextPassAt_ = 0;
+  // Passes are due again as the light after the edit settles (see adaptIfDue).
+  nextPassAt_ = -1;
   convergedPasses_ = 0;
 }
 

@@ -28,8 +28,10 @@ class MeshAdaptation {
   // patches have shot, so little light is sent again) and catch direct shadows.
   static constexpr double kPassFall = 0.25;
   // Passes once converged, each followed by shooting to convergence again, at most this many:
-  // each refines one level, and refining and coarsening could otherwise take turns.
-  static constexpr int kMaxConvergedPasses = 3;
+  // the early passes have refined most of the way by then (each refines one level), a pass at
+  // convergence costs about a solve (every patch has shot light that may reach what changed),
+  // and refining and coarsening could otherwise take turns.
+  static constexpr int kMaxConvergedPasses = 1;
 
   // Starts from `meshed` (the scene's meshes at their patch sizes). settings.minElementSize 0
   // stands for a quarter of each surface's patch size.
@@ -50,7 +52,7 @@ class MeshAdaptation {
 
   // The scene was edited (objects moved): surfaces whose geometry changed take `meshed`'s mesh
   // and lose their refinement, the others keep theirs. The solver is then to take input()
-  // (engine::applyEdit). Passes are due again once the light has converged.
+  // (engine::applyEdit). Passes are due again as the light after the edit settles.
   void edit(const Scene& scene, const MeshedScene& meshed);
 
   uint64_t passes() const { return passes_; }  // passes that changed a mesh
