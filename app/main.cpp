@@ -12,6 +12,19 @@
 
 namespace {
 
+void addAdaptOptions(CLI::App& command, app::AdaptOptions& options) {
+  CLI::Option* threshold =
+      command.add_option("--adapt-threshold", options.threshold,
+                         "refine elements whose luminance differs from a neighbour's by more than this fraction of "
+                         "their mean (turns adaptive refinement on; default 0.25 or the scene's settings.adaptive)")
+          ->check(CLI::PositiveNumber & CLI::Range(0.0, 10.0));
+  CLI::Option* size = command.add_option("--min-element", options.minElementSize,
+                                         "refine no element into parts narrower than this, in scene units (turns "
+                                         "adaptive refinement on; default a quarter of the patch size)")
+                          ->check(CLI::PositiveNumber);
+  command.add_flag("--no-adapt", options.off, "no adaptive refinement, whatever the scene says")->excludes(threshold)->excludes(size);
+}
+
 // The options of the solve that `render` and `export` both run first.
 void addSolveOptions(CLI::App* command, app::SolveOptions& solve) {
   command->add_option("--patch-size", solve.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
@@ -21,6 +34,7 @@ void addSolveOptions(CLI::App* command, app::SolveOptions& solve) {
   command->add_option("--threads", solve.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
       ->check(CLI::Range(1, 64));
   command->add_flag("--quiet", solve.quiet, "no progress lines on stdout");
+  addAdaptOptions(*command, solve.adapt);
 }
 
 }  // namespace
@@ -57,6 +71,7 @@ int main(int argc, char** argv) {
   viewCommand->add_option("--threads", view.lighting.solver.graphicsProcessors,
                           "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
       ->check(CLI::Range(1, 64));
+  addAdaptOptions(*viewCommand, view.adapt);
 
   app::MeshOptions mesh;
   CLI::App* meshCommand = cli.add_subcommand("mesh", "mesh a scene or a polygon case and print statistics");

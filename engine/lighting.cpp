@@ -12,9 +12,12 @@ void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& ou
 }
 
 uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
-                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress) {
+                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress,
+                 MeshAdaptation* adaptation) {
   uint64_t shots = 0;
-  while (shots < maxShots && !solver.converged(converge) && solver.step()) {
+  while (shots < maxShots) {
+    if (adaptation && adaptation->adaptIfDue(solver, converge)) continue;
+    if (solver.converged(converge) || !solver.step()) break;
     ++shots;
     if (progress) progress(solver, shots);
   }
@@ -29,6 +32,22 @@ void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<rad
 
 LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings)
     : surfaces_(std::move(surfaces)), settings_(settings) {
+  start();
+}
+
+LightingThread::LightingThread(const Scene& scene, const MeshedScene& meshed, const LightingSettings& settings)
+    : settings_(settings) {
+  if (settings.adaptive) {
+    adaptation_ = std::make_unique<MeshAdaptation>(scene, meshed, *settings.adaptive);
+    surfaces_ = adaptation_->input();
+    meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
+  } else {
+    surfaces_ = radiosityInput(scene, meshed);
+  }
+  start();
+}
+
+void LightingThread::start() {
   // The first solver is made here, so bad input throws to the caller rather than on the thread.
   auto first = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
   publish(*first, first->converged(settings_.converge));
@@ -57,13 +76,22 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
       if (restart_ || editsApplied_ < editsRequested_) {
         const bool edited = editsApplied_ < editsRequested_;
         restart_ = false;
+        std::unique_ptr<std::pair<Scene, MeshedScene>> editedScene;
         if (edited) {
           surfaces_ = std::move(edited_);
           edited_.clear();
+          editedScene = std::move(editedScene_);
           editsApplied_ = editsRequested_;
         }
         lock.unlock();
         try {
+          if (editedScene) {
+            adaptation_->edit(editedScene->first, editedScene->second);
+            surfaces_ = adaptation_->input();
+            meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
+          } else if (adaptation_ && !edited) {
+            surfaces_ = adaptation_->input();  // a restart lights the meshes as adapted so far
+          }
           if (edited) applyEdit(solver, surfaces_, settings_.solver);
           else solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
           done = solver->converged(settings_.converge);
@@ -78,10 +106,14 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
     }
     // A failed shot leaves the solver half-updated: it shoots no more until a restart.
     try {
-      done = !solver->step() || solver->converged(settings_.converge);
+      const bool shot = solver->step();
+      // A pass that changed meshes is shown at once: the display takes the new meshes with it.
+      const bool adapted = adaptation_ && adaptation_->adaptIfDue(*solver, settings_.converge);
+      if (adapted) meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
+      done = !adapted && (!shot || solver->converged(settings_.converge));
       unpublished = true;
       const auto now = Clock::now();
-      if (done || std::chrono::duration<double>(now - lastPublish).count() >= settings_.publishSeconds) {
+      if (done || adapted || std::chrono::duration<double>(now - lastPublish).count() >= settings_.publishSeconds) {
         publish(*solver, done);
         unpublished = false;
         lastPublish = now;
@@ -151,6 +183,20 @@ void LightingThread::edit(std::vector<radiosity::Surface> surfaces) {
   wake_.notify_all();
 }
 
+void LightingThread::edit(const Scene& scene, const MeshedScene& meshed) {
+  if (!adaptation_) {
+    edit(radiosityInput(scene, meshed));
+    return;
+  }
+  auto copy = std::make_unique<std::pair<Scene, MeshedScene>>(scene, meshed);
+  {
+    std::lock_guard lock(mutex_);
+    editedScene_ = std::move(copy);
+    ++editsRequested_;
+  }
+  wake_.notify_all();
+}
+
 void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
   // Built outside the lock: the UI only ever waits for a pointer swap.
   auto snapshot = std::make_shared<LightingSnapshot>();
@@ -163,6 +209,8 @@ void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
   snapshot->elements = solver.elementCount();
   snapshot->patches = solver.patchCount();
   snapshot->converged = converged;
+  snapshot->meshed = meshes_;
+  snapshot->adaptivePasses = adaptation_ ? adaptation_->passes() : 0;
   std::lock_guard lock(mutex_);
   snapshot->edits = editsApplied_;
   snapshot->paused = paused_;

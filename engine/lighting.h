@@ -3,6 +3,7 @@
 // radiance; the UI takes the newest one without ever waiting for a shot.
 #pragma once
 
+#include "engine/mesh_adaptation.h"
 #include "radiosity/radiosity.h"
 
 #include <glm/vec3.hpp>
@@ -12,8 +13,10 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace engine {
@@ -24,9 +27,12 @@ namespace engine {
 void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out);
 
 // Shoots until the unshot fraction is at most `converge` or `maxShots` shots were taken, calling
-// `progress` (when given) after every shot; returns the shots taken.
+// `progress` (when given) after every shot; returns the shots taken. With `adaptation` (whose
+// input() the solver has), its passes run when due, and shooting goes on after each that
+// changed a mesh until one at convergence changes none.
 uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
-                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress = {});
+                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress = {},
+                 MeshAdaptation* adaptation = nullptr);
 
 // Takes a scene edit into a solution: `surfaces` (the same surfaces in the same order, some moved,
 // some meshed again) replace the solver's, whose light is corrected rather than shot again
@@ -37,6 +43,8 @@ void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<rad
 
 struct LightingSettings {
   radiosity::SolverSettings solver;
+  // Adaptive refinement while shooting (MeshAdaptation; only for a thread made from a scene).
+  std::optional<radiosity::RefinementSettings> adaptive;
   double converge = 1e-3;             // shooting stops once the unshot fraction is below this
   double publishSeconds = 1.0 / 30;   // snapshots at most this often while shooting
 };
@@ -51,6 +59,11 @@ struct LightingSnapshot {
   size_t elements = 0, patches = 0;
   bool converged = false, paused = false;
   uint64_t edits = 0;                  // scene edits the radiance takes into account
+  // With adaptive refinement: the meshes the radiance is for (a new pointer whenever they
+  // changed), and the passes that changed them. Without: null, and the radiance is for the
+  // meshes the thread was given.
+  std::shared_ptr<const MeshedScene> meshed;
+  uint64_t adaptivePasses = 0;
   // Set when a shot or a restart failed (out of memory, no threads): shooting has stopped and
   // only a restart tries again. The radiance is the last good one.
   std::string error;
@@ -60,6 +73,9 @@ class LightingThread {
  public:
   // Starts shooting at once. Throws what radiosity::Solver throws for the surfaces.
   LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings);
+  // The same for a meshed scene; with settings.adaptive its meshes are refined and coarsened as
+  // the light comes in, and the snapshots carry them.
+  LightingThread(const Scene& scene, const MeshedScene& meshed, const LightingSettings& settings);
   ~LightingThread();  // stops after the shot in flight
   LightingThread(const LightingThread&) = delete;
   LightingThread& operator=(const LightingThread&) = delete;
@@ -73,9 +89,14 @@ class LightingThread {
   void restart();
   // The scene changed (an object moved): `surfaces` replace the old ones, in the same order with
   // the same meshes. Applied after the shot in flight; the snapshots count the edits applied.
+  // Not for a thread that adapts its meshes (it has its own): the overload below.
   void edit(std::vector<radiosity::Surface> surfaces);
+  // The same for a thread made from a scene: `meshed` are the edited scene's meshes at their
+  // patch sizes; surfaces that did not change keep their refinement.
+  void edit(const Scene& scene, const MeshedScene& meshed);
 
  private:
+  void start();
   void run(std::unique_ptr<radiosity::Solver> solver);
   void publish(const radiosity::Solver& solver, bool converged);
   void publishError(const std::string& what);
@@ -86,6 +107,9 @@ class LightingThread {
   std::condition_variable wake_;
   bool stop_ = false, paused_ = false, restart_ = false;
   std::vector<radiosity::Surface> edited_;  // the surfaces of the newest edit not yet applied
+  std::unique_ptr<MeshAdaptation> adaptation_;                       // the thread's own once it runs
+  std::unique_ptr<std::pair<Scene, MeshedScene>> editedScene_;       // with adaptation: the newest edit
+  std::shared_ptr<const MeshedScene> meshes_;                        // with adaptation: the last published
   uint64_t editsRequested_ = 0, editsApplied_ = 0;
   std::shared_ptr<const LightingSnapshot> latest_;
   uint64_t version_ = 0;

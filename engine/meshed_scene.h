@@ -30,5 +30,7 @@ constexpr double kShootingPatchPatches = 2;
 // The solver's input: per surface its world vertices and elements, normal, reflectance and
 // emission, elements grouped into shooting patches of kShootingPatchPatches patch sizes.
 std::vector<radiosity::Surface> radiosityInput(const Scene& scene, const MeshedScene& meshed);
+// The same for one surface (its index in both).
+radiosity::Surface radiosityInput(const Scene& scene, const MeshedScene& meshed, size_t surface);
 
 }  // namespace engine

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesher/polygon.h"
+#include "radiosity/adaptive_refinement.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -97,6 +98,9 @@ struct Scene {
   std::string units = "m";
   double metersPerUnit = 1;
   double patchSize = 0;  // settings.patch_size, or derived from the scene's size when absent
+  // settings.adaptive (threshold, min_element_size): adaptive refinement while solving, on by
+  // default for this scene; absent: off unless asked for (walkrad --adapt-threshold).
+  std::optional<radiosity::RefinementSettings> adaptive;
   std::vector<Material> materials;
   std::vector<Object> objects;
   std::vector<Camera> cameras;

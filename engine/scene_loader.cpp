@@ -46,9 +46,10 @@ class SceneParser {
     }
     if (const auto settings = root.find("settings"); settings != root.end()) {
       in_.expectObject(*settings, "settings");
-      in_.allowOnly(*settings, "settings", {"patch_size"});
+      in_.allowOnly(*settings, "settings", {"patch_size", "adaptive"});
       if (const auto size = settings->find("patch_size"); size != settings->end())
         scene_.patchSize = patchSize(*size, "settings.patch_size");
+      if (const auto adaptive = settings->find("adaptive"); adaptive != settings->end()) parseAdaptive(*adaptive);
     }
     parseMaterials(in_.required(root, "", "materials"));
     parseObjects(in_.required(root, "", "objects"));
@@ -56,6 +57,20 @@ class SceneParser {
   }
 
  private:
+  // settings.adaptive: {"threshold": relative jump that refines, (0, 10]; "min_element_size":
+  // the narrowest refined element in scene units, 0 for a quarter of each surface's patch size}.
+  void parseAdaptive(const Json& value) {
+    in_.expectObject(value, "settings.adaptive");
+    in_.allowOnly(value, "settings.adaptive", {"threshold", "min_element_size"});
+    radiosity::RefinementSettings& adaptive = scene_.adaptive.emplace();
+    if (const auto threshold = value.find("threshold"); threshold != value.end()) {
+      adaptive.threshold = in_.number(*threshold, "settings.adaptive.threshold", 0, 10);
+      if (adaptive.threshold <= 0) in_.fail(Diag::OutOfRange, "settings.adaptive.threshold", "must be greater than 0");
+    }
+    if (const auto size = value.find("min_element_size"); size != value.end())
+      adaptive.minElementSize = in_.number(*size, "settings.adaptive.min_element_size", 0, kMaxLength);
+  }
+
   double patchSize(const Json& value, const std::string& path) const {
     const double size = in_.number(value, path, 0, kMaxLength);
     if (size <= 0) in_.fail(Diag::OutOfRange, path, "must be greater than 0");

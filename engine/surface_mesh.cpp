@@ -52,25 +52,37 @@ mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& fra
   return polygon;
 }
 
+std::vector<mesher::Vec2> planeVertices(const Surface& surface, const std::vector<Vec3>& positions) {
+  const PlaneFrame frame = planeFrame(surface);
+  std::vector<mesher::Vec2> vertices;
+  vertices.reserve(positions.size());
+  for (const Vec3& p : positions) vertices.push_back(frame.project(p));
+  return vertices;
+}
+
 SurfaceMesh meshSurface(const Surface& surface) {
   mesher::Mesher mesher;
   return meshSurface(surface, mesher);
 }
 
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher) {
-  const PlaneFrame frame = planeFrame(surface);
   SurfaceMesh result;
   result.polygon = planePolygon(surface, surface);
   result.mesh = mesher.mesh(result.polygon, {surface.patchSize});
-
-  // The surface's own points come first in the mesh, in the same order: keep them exact.
-  result.positions.reserve(result.mesh.vertices.size());
-  result.positions = surface.outer;
-  for (const Ring3& hole : surface.holes) result.positions.insert(result.positions.end(), hole.begin(), hole.end());
-  const double offset = surface.planeOffset();
-  for (size_t i = result.positions.size(); i < result.mesh.vertices.size(); ++i)
-    result.positions.push_back(frame.lift(result.mesh.vertices[i], surface.normal, offset));
+  result.positions = worldPositions(surface, result.mesh.vertices);
   return result;
+}
+
+std::vector<Vec3> worldPositions(const Surface& surface, const std::vector<mesher::Vec2>& vertices) {
+  const PlaneFrame frame = planeFrame(surface);
+  // The surface's own points come first in the mesh, in the same order: keep them exact.
+  std::vector<Vec3> positions;
+  positions.reserve(vertices.size());
+  positions = surface.outer;
+  for (const Ring3& hole : surface.holes) positions.insert(positions.end(), hole.begin(), hole.end());
+  const double offset = surface.planeOffset();
+  for (size_t i = positions.size(); i < vertices.size(); ++i) positions.push_back(frame.lift(vertices[i], surface.normal, offset));
+  return positions;
 }
 
 }  // namespace engine

@@ -21,6 +21,15 @@ struct SurfaceMesh {
 SurfaceMesh meshSurface(const Surface& surface);
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher);
 
+// World positions of the vertices of a mesh of `surface` in its plane coordinates (as
+// meshSurface meshes it, or an adaptive mesh of SurfaceMesh::polygon): the surface's own points,
+// which such meshes list first in the same order, exact.
+std::vector<Vec3> worldPositions(const Surface& surface, const std::vector<mesher::Vec2>& vertices);
+
+// The inverse: world points of `surface`'s plane in its plane coordinates (a mesh moved along
+// with its surface, whose plane coordinates are those of where it was).
+std::vector<mesher::Vec2> planeVertices(const Surface& surface, const std::vector<Vec3>& positions);
+
 // The surface's rings in the plane coordinates `frameOf` is meshed in (a surface in the same
 // plane), counter-clockwise about the front normal.
 mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf);

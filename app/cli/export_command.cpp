@@ -30,11 +30,12 @@ int runExport(const ExportOptions& options) {
 
   // Meshed and solved as `walkrad render` does, then the display's vertex radiance is baked.
   const engine::MeshedScene meshed = engine::meshScene(scene);
-  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  const std::unique_ptr<engine::MeshAdaptation> adaptation = adaptationFor(options.solve, scene, meshed);
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = options.solve.threads;
-  radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
-  solveWithProgress(solver, options.solve, "export", "solved", start);
+  radiosity::Solver solver(adaptation ? adaptation->input() : engine::radiosityInput(scene, meshed), settings);
+  solveWithProgress(solver, options.solve, "export", "solved", start, adaptation.get());
+  engine::DisplayMesh mesh = engine::displayMesh(adaptation ? adaptation->meshed() : meshed);
   engine::displayRadiance(solver, mesh.radiance);
 
   const double exposure = options.exposure.value_or(engine::autoExposure(mesh));

@@ -5,6 +5,7 @@
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
 #include "engine/lighting.h"
+#include "engine/mesh_adaptation.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_editor.h"
 #include "engine/scene_loader.h"
@@ -90,8 +91,13 @@ int runRender(const RenderOptions& options) {
   start = Clock::now();
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = options.solve.threads;
-  auto solver = std::make_unique<radiosity::Solver>(engine::radiosityInput(editor.scene(), editor.meshed()), settings);
-  const auto solve = [&](const std::string& what) { return solveWithProgress(*solver, options.solve, "render", what, start); };
+  // With adaptive refinement the solver lights the adaptation's meshes, which follow the light.
+  const std::unique_ptr<engine::MeshAdaptation> adaptation = adaptationFor(options.solve, editor.scene(), editor.meshed());
+  auto solver = std::make_unique<radiosity::Solver>(
+      adaptation ? adaptation->input() : engine::radiosityInput(editor.scene(), editor.meshed()), settings);
+  const auto solve = [&](const std::string& what) {
+    return solveWithProgress(*solver, options.solve, "render", what, start, adaptation.get());
+  };
   uint64_t shots = solve("solved");
   const double solveMs = millisecondsSince(start);
 
@@ -104,7 +110,13 @@ int runRender(const RenderOptions& options) {
     engine::ObjectPose pose = engine::poseOf(editor.scene().objects[move.object]);
     pose.position += move.offset;
     editor.setPose(move.object, pose);
-    std::vector<radiosity::Surface> input = engine::radiosityInput(editor.scene(), editor.meshed());
+    std::vector<radiosity::Surface> input;
+    if (adaptation) {
+      adaptation->edit(editor.scene(), editor.meshed());
+      input = adaptation->input();
+    } else {
+      input = engine::radiosityInput(editor.scene(), editor.meshed());
+    }
     const double remeshMs = millisecondsSince(start);
     engine::applyEdit(solver, input, settings);
     const bool first = solver->step();  // the first relit solution a display could show
@@ -127,7 +139,8 @@ int runRender(const RenderOptions& options) {
                          {"shots", solver->stats().shots},
                          {"unshot_fraction", solver->unshotFraction()}});
   }
-  if (!moves.empty()) mesh = engine::displayMesh(editor.meshed());
+  if (adaptation) mesh = engine::displayMesh(adaptation->meshed());
+  else if (!moves.empty()) mesh = engine::displayMesh(editor.meshed());
   engine::displayRadiance(*solver, mesh.radiance);
   const engine::Scene& scene = editor.scene();
 
@@ -157,6 +170,7 @@ int runRender(const RenderOptions& options) {
         {"exposure", exposure},
     };
     if (!moves.empty()) stats["moves"] = moveStats;
+    if (adaptation) stats["adaptive_passes"] = adaptation->passes();
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   return 0;

@@ -2,11 +2,15 @@
 // overrides, and the solve with its progress lines.
 #pragma once
 
+#include "app/cli/adapt_options.h"
+#include "engine/mesh_adaptation.h"
+#include "engine/meshed_scene.h"
 #include "engine/scene.h"
 #include "radiosity/radiosity.h"
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +23,7 @@ struct SolveOptions {
   uint64_t maxShots = UINT64_MAX;   // or until this many shots
   int threads = 1;                  // pxpl5 graphics processors
   bool quiet = false;               // no progress lines (stdout)
+  AdaptOptions adapt;               // adaptive refinement while solving
 };
 
 // Loads the scene (SceneError for bad input), then checks that each non-empty `outputs` can be
@@ -27,10 +32,17 @@ struct SolveOptions {
 engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs,
                            const std::optional<double>& patchSize);
 
-// Shoots until the options' convergence or shot limit (engine::solveTo). Unless quiet, prints
+// The adaptive refinement to run while solving `meshed` (made from `scene`), as the options and
+// the scene's settings say, or none.
+std::unique_ptr<engine::MeshAdaptation> adaptationFor(const SolveOptions& options, const engine::Scene& scene,
+                                                      const engine::MeshedScene& meshed);
+
+// Shoots until the options' convergence or shot limit (engine::solveTo), adapting the meshes
+// when `adaptation` is given (the solver's input must then be adaptation->input()). Unless quiet, prints
 // "walkrad COMMAND: N shots, unshot X%" about once a second and at the end "walkrad COMMAND:
 // WHAT in S s: ..." with the time since `start`. Returns the shots taken.
 uint64_t solveWithProgress(radiosity::Solver& solver, const SolveOptions& options, const std::string& command,
-                           const std::string& what, std::chrono::steady_clock::time_point start);
+                           const std::string& what, std::chrono::steady_clock::time_point start,
+                           engine::MeshAdaptation* adaptation = nullptr);
 
 }  // namespace app

@@ -201,8 +201,12 @@ int runView(const ViewOptions& options) {
     PanelState panel;
     panel.exposure = static_cast<float>(engine::autoExposure(mesh));
     // The solver shoots on its own thread; each frame shows its newest snapshot.
-    engine::LightingThread lighting(engine::radiosityInput(scene, edits.editor().meshed()), options.lighting);
+    engine::LightingSettings lightingSettings = options.lighting;
+    lightingSettings.adaptive = adaptiveSettings(options.adapt, scene);
+    engine::LightingThread lighting(scene, edits.editor().meshed(), lightingSettings);
     std::shared_ptr<const engine::LightingSnapshot> shown;
+    // With adaptive refinement the display shows the lighting thread's meshes (null: the editor's).
+    std::shared_ptr<const engine::MeshedScene> shownMeshes;
     ProgressLine progress(scene.file);
     panel.wireframe = options.wireframe;
     WalkSettings walk;
@@ -215,7 +219,7 @@ int runView(const ViewOptions& options) {
     uint64_t editsSent = 0;
     bool remeshedSinceSent = false;
     auto showMoved = [&](uint32_t object) {
-      if (edits.editor().remeshed().empty()) {
+      if (edits.editor().remeshed().empty() && !shownMeshes) {
         engine::updatePositions(edits.editor().meshed(), edits.editor().surfacesOf(object), mesh);
         renderer.updatePositions(mesh.positions);
         return;
@@ -225,9 +229,10 @@ int runView(const ViewOptions& options) {
       mesh = std::move(fresh);
       renderer.upload(mesh);
       remeshedSinceSent = true;
+      shownMeshes = nullptr;
     };
     auto relight = [&] {
-      lighting.edit(engine::radiosityInput(scene, edits.editor().meshed()));
+      lighting.edit(scene, edits.editor().meshed());
       ++editsSent;
       remeshedSinceSent = false;
     };
@@ -286,7 +291,13 @@ int runView(const ViewOptions& options) {
       std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
       if (newest != shown) {
         shown = std::move(newest);
-        if (shown->edits == editsSent && !remeshedSinceSent && shown->radiance.size() == mesh.positions.size()) {
+        if (shown->edits == editsSent && !remeshedSinceSent && shown->meshed && shown->meshed != shownMeshes) {
+          // The lighting thread refined or coarsened: its meshes replace the display's.
+          mesh = engine::displayMesh(*shown->meshed);
+          shownMeshes = shown->meshed;
+          mesh.radiance = shown->radiance;
+          renderer.upload(mesh);
+        } else if (shown->edits == editsSent && !remeshedSinceSent && shown->radiance.size() == mesh.positions.size()) {
           mesh.radiance = shown->radiance;
           renderer.updateRadiance(mesh.radiance);
         }

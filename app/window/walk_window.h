@@ -1,6 +1,7 @@
 // `walkrad view`: the walkthrough window (GLFW + Dear ImGui).
 #pragma once
 
+#include "app/cli/adapt_options.h"
 #include "engine/lighting.h"
 
 #include <string>
@@ -14,7 +15,8 @@ struct ViewOptions {
   int frames = 0;          // > 0: close after this many frames (scripts, tests)
   std::string screenshot;  // with `frames`: save the last frame here
   bool wireframe = false;  // start with the mesh edges drawn
-  engine::LightingSettings lighting;  // the solver thread's
+  engine::LightingSettings lighting;  // the solver thread's (its `adaptive` from `adapt` and the scene)
+  AdaptOptions adapt;                 // adaptive refinement while solving
 };
 
 // Runs the window until it is closed; returns the process exit code, having printed one line on

@@ -80,6 +80,15 @@ walkrad_cli_test(render_move_two_numbers 2 ARGS render ${PROJECT_SOURCE_DIR}/ass
                  --move "tall block:1,0" STDERR "expected three numbers")
 walkrad_cli_test(render_move_not_a_number 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
                  --move "tall block:1,x,0" STDERR "expected three numbers")
+# Adaptive refinement: on with its flags (the stats count its passes), a bad value or both on
+# and off is exit 2 naming the option.
+walkrad_cli_test(render_adaptive 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/box-on-floor.json --out ${out}/cli-adaptive.png
+                 --width 160 --height 120 --converge 0.05 --adapt-threshold 0.3 --min-element 0.2 --stats ${out}/cli-adaptive.json
+                 FILE ${out}/cli-adaptive.json)
+walkrad_cli_test(render_adaptive_zero_threshold 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --adapt-threshold 0 STDERR "adapt-threshold")
+walkrad_cli_test(render_adaptive_on_and_off 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --adapt-threshold 0.2 --no-adapt STDERR "no-adapt")
 
 # walkrad check: findings are not failures (exit 0); a file that cannot be read or breaks the
 # spec is exit 2, as for the other subcommands.

@@ -2,7 +2,9 @@
 #include "engine/lighting.h"
 
 #include "engine/display_mesh.h"
+#include "engine/mesh_adaptation.h"
 #include "engine/meshed_scene.h"
+#include "engine/scene_editor.h"
 #include "engine/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +94,44 @@ TEST(Lighting, APausedSnapshotShowsEveryShot) {
   const auto paused = waitFor(lighting, [](const LightingSnapshot& s) { return s.paused && s.shots > 0; });
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   EXPECT_EQ(lighting.latest()->shots, paused->shots);  // nothing shot since
+}
+
+// With adaptive refinement the thread publishes its meshes with the radiance, and comes to what a
+// solve on this thread with the same passes comes to; an edit keeps them coming.
+TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
+  SceneEditor editor(loadAsset("box-on-floor.json"), meshScene(loadAsset("box-on-floor.json")));
+  LightingSettings settings;
+  settings.converge = 0.05;
+  settings.solver.resolution = 128;
+  settings.adaptive = radiosity::RefinementSettings{};
+  LightingThread lighting(editor.scene(), editor.meshed(), settings);
+  const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
+  ASSERT_NE(first->meshed, nullptr);
+  EXPECT_EQ(first->radiance.size(), displayMesh(*first->meshed).positions.size());
+  const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.converged; });
+  EXPECT_GT(done->adaptivePasses, 0u);
+  EXPECT_NE(done->meshed, first->meshed);
+  const DisplayMesh adapted = displayMesh(*done->meshed);
+  EXPECT_EQ(done->elements, adapted.elements);
+  EXPECT_GT(adapted.elements, displayMesh(*first->meshed).elements);
+  EXPECT_EQ(done->radiance.size(), adapted.positions.size());
+
+  MeshAdaptation adaptation(editor.scene(), editor.meshed(), *settings.adaptive);
+  radiosity::Solver solver(adaptation.input(), settings.solver);
+  solveTo(solver, settings.converge, UINT64_MAX, {}, &adaptation);
+  std::vector<glm::vec3> here;
+  displayRadiance(solver, here);
+  EXPECT_EQ(here, done->radiance);
+  EXPECT_EQ(adaptation.passes(), done->adaptivePasses);
+
+  const uint32_t box = *editor.findObject("box");
+  ObjectPose pose = poseOf(editor.scene().objects[box]);
+  pose.position.x += 0.5;
+  editor.setPose(box, pose);
+  lighting.edit(editor.scene(), editor.meshed());
+  const auto moved = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && s.converged; });
+  ASSERT_NE(moved->meshed, nullptr);
+  EXPECT_EQ(moved->radiance.size(), displayMesh(*moved->meshed).positions.size());
 }
 
 }  // namespace

@@ -49,6 +49,20 @@ TEST(SceneLoader, UnitsGiveMetresPerUnit) {
   EXPECT_EQ(parse(j).units, "m");
 }
 
+TEST(SceneLoader, AdaptiveSettingsAreOffUnlessGivenAndTheirKeysDefault) {
+  Json j = test::baseScene();
+  EXPECT_FALSE(test::parse(j).adaptive);
+  j["settings"]["adaptive"] = Json::object();
+  const Scene defaults = test::parse(j);
+  ASSERT_TRUE(defaults.adaptive);
+  EXPECT_EQ(defaults.adaptive->threshold, radiosity::RefinementSettings{}.threshold);
+  EXPECT_EQ(defaults.adaptive->minElementSize, 0);
+  j["settings"]["adaptive"] = {{"threshold", 0.1}, {"min_element_size", 0.05}};
+  const Scene given = test::parse(j);
+  EXPECT_EQ(given.adaptive->threshold, 0.1);
+  EXPECT_EQ(given.adaptive->minElementSize, 0.05);
+}
+
 TEST(SceneLoader, MaterialsKeepTheirValuesAndEmissionDefaultsToBlack) {
   const Scene scene = parse(test::baseScene());
   EXPECT_EQ(scene.materials[0].name, "white");

@@ -1,0 +1,13 @@
+#include "app/cli/adapt_options.h"
+
+namespace app {
+
+std::optional<radiosity::RefinementSettings> adaptiveSettings(const AdaptOptions& options, const engine::Scene& scene) {
+  if (options.off || (!scene.adaptive && !options.threshold && !options.minElementSize)) return std::nullopt;
+  radiosity::RefinementSettings settings = scene.adaptive.value_or(radiosity::RefinementSettings{});
+  if (options.threshold) settings.threshold = *options.threshold;
+  if (options.minElementSize) settings.minElementSize = *options.minElementSize;
+  return settings;
+}
+
+}  // namespace app
