@@ -8,9 +8,16 @@
 
 namespace engine {
 
-// Reads, validates and builds the surfaces of a scene file. Throws SceneError (file, JSON path,
-// problem) for anything that breaks the spec; nothing is returned half-loaded.
-Scene loadScene(const std::string& path);
+// What the command line may add to a model file.
+struct LoadOptions {
+  std::string units;    // glTF only: the units of the model's coordinates (else the sidecar's, else m)
+  std::string sidecar;  // glTF only: this sidecar instead of MODEL.walkrad.json beside the model
+};
+
+// Reads, validates and builds the surfaces of a scene file, or of a glTF model (.gltf, .glb:
+// gltf_loader.h). Throws SceneError (file, JSON path, problem) for anything that breaks the
+// spec, and GltfOnly for options given with a scene file; nothing is returned half-loaded.
+Scene loadScene(const std::string& path, const LoadOptions& options = {});
 
 // The same for scene text already in memory; `file` names it in messages.
 Scene parseScene(std::string_view text, const std::string& file);

@@ -1,6 +1,7 @@
 #include "app/cli/render_command.h"
 
 #include "app/gl/headless_render.h"
+#include "app/cli/import_stats.h"
 #include "app/image/atomic_file.h"
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
@@ -64,13 +65,17 @@ int runRender(const RenderOptions& options) {
     return 2;
   }
   auto start = Clock::now();
-  engine::Scene loaded = engine::loadScene(options.scene);
+  engine::Scene loaded = engine::loadScene(options.scene, options.load);
   // Outputs are checked after the scene (bad input is exit 2 first) and before the long part.
   for (const std::string& file : {options.out, options.linear, options.stats})
     if (!file.empty()) checkCanWrite(file);
   if (options.patchSize)
     for (engine::Surface& s : loaded.surfaces) s.patchSize = *options.patchSize;
   const double loadMs = millisecondsSince(start);
+  // A model from a modeller often has no lamps: say why the picture will be black.
+  if (std::none_of(loaded.materials.begin(), loaded.materials.end(), [](const engine::Material& m) { return m.emission != engine::Vec3{0}; }))
+    std::cerr << "walkrad render: " << options.scene << ": nothing emits light, so the picture is black"
+              << (loaded.imported ? " (give a material an emission, or a sky, in its .walkrad.json sidecar)" : "") << "\n";
 
   ViewCamera camera;
   if (!chooseCamera(loaded, options.camera, camera)) {
@@ -174,6 +179,7 @@ int runRender(const RenderOptions& options) {
         {"exposure", exposure},
     };
     if (!moves.empty()) stats["moves"] = moveStats;
+    if (scene.imported) stats["import"] = importStats(scene);
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   return 0;

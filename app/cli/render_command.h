@@ -1,6 +1,8 @@
 // `walkrad render`: a headless image of a scene (spec/cli.md).
 #pragma once
 
+#include "engine/scene_loader.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,6 +12,7 @@ namespace app {
 
 struct RenderOptions {
   std::string scene;
+  engine::LoadOptions load;  // glTF: units and sidecar
   std::string out;     // PNG, tone-mapped sRGB
   std::string linear;  // PFM, radiance
   std::string camera;  // empty: the scene's default

@@ -13,9 +13,11 @@
 #include "app/window/scene_edits.h"
 #include "app/window/scene_panel.h"
 #include "app/window/walk_controls.h"
+#include "engine/diagnostics.h"
 #include "engine/display_mesh.h"
 #include "engine/lighting.h"
 #include "engine/meshed_scene.h"
+#include "engine/gltf_loader.h"
 #include "engine/scene_loader.h"
 
 #include <ctime>
@@ -154,8 +156,14 @@ WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking
 }  // namespace
 
 int runView(const ViewOptions& options) {
-  std::string text = engine::readInputFile(options.scene);
-  engine::Scene loaded = engine::parseScene(text, options.scene);
+  // A scene file's text is kept for saving poses into it; a glTF model is not written to.
+  const bool gltf = engine::isGltfPath(options.scene);
+  std::string text = gltf ? std::string() : engine::readInputFile(options.scene);
+  engine::Scene loaded = gltf ? engine::loadScene(options.scene, options.load) : engine::parseScene(text, options.scene);
+  if (!gltf && (!options.load.units.empty() || !options.load.sidecar.empty()))
+    throw engine::SceneError(engine::Diag::GltfOnly, options.scene, options.load.units.empty() ? "--sidecar" : "--units");
+  if (options.patchSize)
+    for (engine::Surface& s : loaded.surfaces) s.patchSize = *options.patchSize;
   ViewCamera camera;
   if (!chooseCamera(loaded, options.camera, camera)) {
     std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";

@@ -80,3 +80,7 @@ walkrad_cli_test(render_move_two_numbers 2 ARGS render ${PROJECT_SOURCE_DIR}/ass
                  --move "tall block:1,0" STDERR "expected three numbers")
 walkrad_cli_test(render_move_not_a_number 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
                  --move "tall block:1,x,0" STDERR "expected three numbers")
+walkrad_cli_test(truncated_gltf 2 ARGS render ${cli_dir}/truncated.gltf --out ${out}/trunc-gltf.png
+                 STDERR "truncated.gltf: not a readable glTF 2.0 model: .*parse error" NO_FILE ${out}/trunc-gltf.png)
+walkrad_cli_test(units_for_scene_file 2 ARGS mesh ${PROJECT_SOURCE_DIR}/assets/cornell.json --units cm
+                 STDERR "cornell.json: --units: this option applies to glTF models only")
