@@ -2,6 +2,9 @@
 // cameras and the sidecar, on models written by the test writer.
 #include "engine/gltf_loader.h"
 
+#include "engine/meshed_scene.h"
+#include "engine/scene_editor.h"
+
 #include "tests/engine/gltf_writer.h"
 
 #include <glm/geometric.hpp>
@@ -228,6 +231,43 @@ TEST(GltfLoader, TheSidecarCompletesTheModel) {
   // The command line's units win over the sidecar's.
   EXPECT_EQ(loadGltf(path, {"cm", ""}).units, "cm");
   std::remove((std::string(WALKRAD_TEST_OUTPUT) + "/sidecar-room.walkrad.json").c_str());
+}
+
+}  // namespace
+}  // namespace engine
+
+namespace engine {
+namespace {
+
+// A glTF object is dragged like a scene file's: its surfaces move rigidly with its pose (turns
+// about its node's origin) and come back exactly.
+TEST(GltfLoader, ObjectsMoveThroughTheEditor) {
+  GltfModel m = oneNode(floorSquare(4), "floor");
+  GltfNode box;
+  box.name = "box";
+  box.translation = {1, 0, 1};
+  GltfPrimitive top = floorSquare();
+  for (Vec3& v : top.positions) v.y = 0.5;
+  box.primitives = {top};
+  m.nodes.push_back(box);
+  m.roots.push_back(1);
+  Scene scene = parseGltf(test::gltfText(m), "t.gltf");
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_EQ(scene.objects[1].position, Vec3(1, 0, 1));
+  MeshedScene meshed = meshScene(scene);
+  SceneEditor editor(std::move(scene), std::move(meshed));
+  ASSERT_EQ(editor.surfacesOf(1).size(), 1u);
+  const uint32_t s = editor.surfacesOf(1).front();
+  const Ring3 home = editor.scene().surfaces[s].outer;
+  EXPECT_TRUE(editor.setPose(1, {Vec3(2, 0, 1), 90}));
+  for (size_t i = 0; i < home.size(); ++i) {
+    // Turned 90 degrees about (1, 0, 1) (+x toward -z), then moved 1 along x.
+    const Vec3 d = home[i] - Vec3(1, 0, 1);
+    const Vec3 expected = Vec3(2, 0, 1) + Vec3(d.z, d.y, -d.x);
+    EXPECT_NEAR(glm::length(editor.scene().surfaces[s].outer[i] - expected), 0, 1e-12);
+  }
+  EXPECT_TRUE(editor.setPose(1, {Vec3(1, 0, 1), 0}));
+  EXPECT_EQ(editor.scene().surfaces[s].outer, home);
 }
 
 }  // namespace
