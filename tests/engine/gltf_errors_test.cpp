@@ -31,7 +31,7 @@ GltfModel smallModel() {
   test::GltfNode camera{"eye", {}, {}, {0.5, 1, 3}, {}, {}, {}, 0};
   m.nodes = {parent, child, camera};
   m.roots = {0, 2};
-  m.materials = {{"white", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0}};
+  m.materials = {{"white", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0, ""}};
   m.cameras = {{"eye", 0.8}};
   return m;
 }

@@ -11,6 +11,9 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
+#include <glm/ext/vector_uint3_sized.hpp>
+
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -150,7 +153,7 @@ TEST(GltfLoader, MaterialsGiveReflectanceAndEmittedRadiance) {
   lamp.material = 0;
   bright.material = 1;
   m.nodes[0].primitives = {lamp, plain, bright};
-  m.materials = {{"lamp", {0.5, 0.4, 0.3, 1}, {1, 0.5, 0.25}, 8}, {"bright", {1, 1, 1, 1}, Vec3{0}, 0}};
+  m.materials = {{"lamp", {0.5, 0.4, 0.3, 1}, {1, 0.5, 0.25}, 8, ""}, {"bright", {1, 1, 1, 1}, Vec3{0}, 0, ""}};
   const Scene scene = parseGltf(test::gltfText(m), "t.gltf");
   ASSERT_EQ(scene.materials.size(), 3u);
   EXPECT_EQ(scene.materials[0].name, "lamp");
@@ -191,6 +194,37 @@ std::string writeFile(const std::string& name, const std::string& text) {
   return path;
 }
 
+// An uncompressed 24-bit BMP (a format tinygltf's image loader reads) of one row of pixels.
+std::string bmpRow(const std::vector<glm::u8vec3>& pixels) {
+  const auto width = static_cast<uint32_t>(pixels.size());
+  const uint32_t row = (3 * width + 3) / 4 * 4;
+  std::string out;
+  auto put = [&](uint32_t value, int bytes) {
+    for (int i = 0; i < bytes; ++i) out += static_cast<char>((value >> (8 * i)) & 255);
+  };
+  out += "BM";
+  put(54 + row, 4), put(0, 4), put(54, 4);                      // file header
+  put(40, 4), put(width, 4), put(1, 4), put(1, 2), put(24, 2);  // info header: one row, 24 bits
+  put(0, 4), put(row, 4), put(2835, 4), put(2835, 4), put(0, 4), put(0, 4);
+  for (const glm::u8vec3& p : pixels) out += static_cast<char>(p.b), out += static_cast<char>(p.g), out += static_cast<char>(p.r);
+  out.append(row - 3 * width, '\0');
+  return out;
+}
+
+// A base-colour texture is averaged to one reflectance: the mean of its sRGB-decoded pixels
+// times baseColorFactor.
+TEST(GltfLoader, ABaseColourTextureIsAveraged) {
+  writeFile("texture-two-pixels.bmp", bmpRow({{255, 188, 0}, {0, 188, 255}}));
+  GltfModel m = oneNode(floorSquare());
+  m.nodes[0].primitives[0].material = 0;
+  m.materials = {{"painted", {0.8, 0.8, 0.8, 1}, Vec3{0}, 0, "texture-two-pixels.bmp"}};
+  const Scene scene = loadGltf(writeFile("texture.gltf", test::gltfText(m)));
+  const double green = std::pow((188 / 255.0 + 0.055) / 1.055, 2.4);  // sRGB 188, about 0.50
+  EXPECT_NEAR(scene.materials[0].reflectance.r, 0.8 * 0.5, 1e-9);
+  EXPECT_NEAR(scene.materials[0].reflectance.g, 0.8 * green, 1e-9);
+  EXPECT_NEAR(scene.materials[0].reflectance.b, 0.8 * 0.5, 1e-9);
+}
+
 // The sidecar beside the model: units, patch size, emission, omitted materials, movability, sky.
 TEST(GltfLoader, TheSidecarCompletesTheModel) {
   GltfModel m = oneNode(floorSquare(4), "floor");
@@ -203,7 +237,7 @@ TEST(GltfLoader, TheSidecarCompletesTheModel) {
   m.nodes[0].primitives[0].material = 0;
   m.nodes[0].primitives.push_back(glass);
   m.nodes[0].primitives.push_back(shade);
-  m.materials = {{"paint", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0}, {"glass", {0.9, 0.9, 0.9, 1}, Vec3{0}, 0}};
+  m.materials = {{"paint", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0, ""}, {"glass", {0.9, 0.9, 0.9, 1}, Vec3{0}, 0, ""}};
   const std::string path = writeFile("sidecar-room.gltf", test::gltfText(m));
   const Scene plain = loadGltf(path);
   EXPECT_EQ(plain.units, "m");

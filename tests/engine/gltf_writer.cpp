@@ -108,13 +108,18 @@ Json document(const GltfModel& model, std::string& buffer) {
   }
   j["nodes"] = nodes;
   if (!meshes.empty()) j["meshes"] = meshes;
-  Json materials = Json::array();
+  Json materials = Json::array(), textures = Json::array(), images = Json::array();
   bool strength = false;
   for (const GltfMaterial& m : model.materials) {
     Json material = {{"name", m.name},
                      {"pbrMetallicRoughness", {{"baseColorFactor", {m.baseColor.r, m.baseColor.g, m.baseColor.b, m.baseColor.a}},
                                                {"metallicFactor", 0}}},
                      {"emissiveFactor", {m.emissive.x, m.emissive.y, m.emissive.z}}};
+    if (!m.baseColorImage.empty()) {
+      material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", textures.size()}};
+      textures.push_back({{"source", images.size()}});
+      images.push_back({{"uri", m.baseColorImage}});
+    }
     if (m.emissiveStrength > 0) {
       material["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", m.emissiveStrength}}}};
       strength = true;
@@ -122,6 +127,7 @@ Json document(const GltfModel& model, std::string& buffer) {
     materials.push_back(material);
   }
   if (!materials.empty()) j["materials"] = materials;
+  if (!textures.empty()) j["textures"] = textures, j["images"] = images;
   if (strength) j["extensionsUsed"] = {"KHR_materials_emissive_strength"};
   Json cameras = Json::array();
   for (const GltfCamera& c : model.cameras)
@@ -163,7 +169,7 @@ std::string glbBytes(const GltfModel& model) {
 GltfModel modelOfScene(const Scene& scene, double scale) {
   GltfModel model;
   for (const Material& m : scene.materials) {
-    GltfMaterial material{m.name, glm::dvec4(m.reflectance, 1), Vec3{0}, 0};
+    GltfMaterial material{m.name, glm::dvec4(m.reflectance, 1), Vec3{0}, 0, ""};
     const double peak = std::max({m.emission.x, m.emission.y, m.emission.z});
     if (peak > 0) material.emissive = m.emission / peak, material.emissiveStrength = peak;
     model.materials.push_back(material);

@@ -41,6 +41,7 @@ struct GltfMaterial {
   glm::dvec4 baseColor{1};
   Vec3 emissive{0};
   double emissiveStrength = 0;  // > 0: written as KHR_materials_emissive_strength
+  std::string baseColorImage;   // a base-colour texture's image file (uri), or none
 };
 
 struct GltfCamera {
