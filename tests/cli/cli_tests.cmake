@@ -84,3 +84,7 @@ walkrad_cli_test(truncated_gltf 2 ARGS render ${cli_dir}/truncated.gltf --out ${
                  STDERR "truncated.gltf: not a readable glTF 2.0 model: .*parse error" NO_FILE ${out}/trunc-gltf.png)
 walkrad_cli_test(units_for_scene_file 2 ARGS mesh ${PROJECT_SOURCE_DIR}/assets/cornell.json --units cm
                  STDERR "cornell.json: --units: this option applies to glTF models only")
+# A model without lamps renders (black), saying why and how to light it.
+walkrad_cli_test(gltf_without_light 0 ARGS render ${cli_dir}/no_light.gltf --out ${out}/no-light.png --quiet
+                 STDERR "no_light.gltf: nothing emits light, so the picture is black \\(give a material an emission, or a sky, in its .walkrad.json sidecar\\)"
+                 FILE ${out}/no-light.png)
