@@ -239,14 +239,16 @@ class GltfImporter {
         if (!(material.emission[c] >= 0 && material.emission[c] <= kMaxEmission))
           fail(Diag::OutOfRange, place + ".emissiveFactor", "emission must lie in 0..1e6");
       }
-      bool omit = false;
+      bool omit = false, twoSided = false;
       if (const auto o = sidecar_.materials.find(m.name); o != sidecar_.materials.end()) {
         if (o->second.reflectance) material.reflectance = *o->second.reflectance;
         if (o->second.emission) material.emission = *o->second.emission;
         omit = o->second.omit;
+        twoSided = o->second.twoSided;
         overridden.insert(m.name);
       }
       omitted_.push_back(omit);
+      twoSided_.push_back(twoSided);
       scene_.materials.push_back(std::move(material));
     }
     for (const auto& [name, o] : sidecar_.materials)
@@ -264,6 +266,7 @@ class GltfImporter {
       defaultMaterial_ = static_cast<uint32_t>(scene_.materials.size());
       scene_.materials.push_back(std::move(material));
       omitted_.push_back(false);
+      twoSided_.push_back(false);
     }
     return *defaultMaterial_;
   }
@@ -360,6 +363,7 @@ class GltfImporter {
       auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
         if (mirrored) std::swap(b, c);
         triangles_.push_back({{points[a], points[b], points[c]}, material, object});
+        if (twoSided_[material]) triangles_.push_back({{points[a], points[c], points[b]}, material, object});
       };
       if (mode == TINYGLTF_MODE_TRIANGLES) {
         for (size_t i = 0; i + 2 < indices.size(); i += 3) add(indices[i], indices[i + 1], indices[i + 2]);
@@ -396,7 +400,8 @@ class GltfImporter {
   const GltfSidecar& sidecar_;
   std::string sidecarFile_;
   Scene& scene_;
-  std::vector<uint8_t> omitted_;  // per material
+  std::vector<uint8_t> omitted_;   // per material
+  std::vector<uint8_t> twoSided_;  // per material
   std::optional<uint32_t> defaultMaterial_;
   std::vector<uint8_t> visited_;  // per node
   std::set<std::string> cameraNames_;

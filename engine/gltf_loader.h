@@ -10,7 +10,9 @@
 //   reflectance, clamped to 0.95 so that closed rooms still converge; emissiveFactor times
 //   KHR_materials_emissive_strength (times the sidecar's emission_scale) is the emitted
 //   radiance. Triangles without a material get glTF's default (white, so 0.95). Faces are
-//   one-sided (doubleSided is not honoured): their front is the counter-clockwise side.
+//   one-sided, their front the counter-clockwise side: glTF's doubleSided is not honoured
+//   (exporters set it on whole models, which would double every wall); the sidecar's
+//   two_sided makes one material's triangles face both ways.
 // - Perspective cameras become scene cameras (looking down the node's -z, up its +y).
 // - Coplanar triangles of one object and material are merged into planar polygons with holes
 //   (triangle_merge.h), with the tolerance kMergeTolerance of the model's diagonal.

@@ -42,13 +42,15 @@ GltfSidecar parseGltfSidecar(std::string_view text, const std::string& file) {
     for (const auto& item : v->items()) {
       const std::string path = child("materials", item.key());
       in.expectObject(item.value(), path);
-      in.allowOnly(item.value(), path, {"reflectance", "emission", "omit"});
+      in.allowOnly(item.value(), path, {"reflectance", "emission", "omit", "two_sided"});
       MaterialOverride& m = sidecar.materials[item.key()];
       if (const auto r = item.value().find("reflectance"); r != item.value().end())
         m.reflectance = in.vec3(*r, child(path, "reflectance"), 0, 1);
       if (const auto e = item.value().find("emission"); e != item.value().end())
         m.emission = in.vec3(*e, child(path, "emission"), 0, kMaxEmission);
       if (const auto o = item.value().find("omit"); o != item.value().end()) m.omit = in.boolean(*o, child(path, "omit"));
+      if (const auto t = item.value().find("two_sided"); t != item.value().end())
+        m.twoSided = in.boolean(*t, child(path, "two_sided"));
     }
   }
   if (const auto v = root.find("objects"); v != root.end()) {

@@ -4,7 +4,8 @@
 // file, MODEL.walkrad.json next to MODEL.gltf, read with the scene format's located errors:
 //
 //   { "units": "m", "patch_size": 0.5, "emission_scale": 1, "movable": true,
-//     "materials": { "NAME": { "reflectance": [r, g, b], "emission": [r, g, b], "omit": false } },
+//     "materials": { "NAME": { "reflectance": [r, g, b], "emission": [r, g, b], "omit": false,
+//                              "two_sided": false } },
 //     "objects": { "NODE NAME": { "movable": false } },
 //     "sky": { "emission": [r, g, b] } }
 //
@@ -23,6 +24,7 @@ namespace engine {
 struct MaterialOverride {
   std::optional<Vec3> reflectance, emission;  // replace the model's
   bool omit = false;                          // leave its triangles out (glass, say)
+  bool twoSided = false;                      // its triangles face both ways (a thin partition)
 };
 
 struct GltfSidecar {

@@ -95,7 +95,8 @@ struct Surface {
 // What importing a triangle model (glTF) found, for statistics and tests.
 struct ImportCounts {
   size_t nodes = 0;       // top-level nodes (each an object when it holds triangles)
-  size_t triangles = 0;   // read (strips and fans as triangles; the sidecar's omitted materials not)
+  size_t triangles = 0;   // read: strips and fans as triangles, the sidecar's omitted materials
+                          // left out, its two-sided ones twice
   size_t degenerate = 0;  // skipped: no area
   size_t tJunctions = 0;  // edges split at a vertex lying on them
   size_t singles = 0;     // surfaces that are one triangle

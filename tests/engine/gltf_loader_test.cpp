@@ -13,6 +13,7 @@
 
 #include <glm/ext/vector_uint3_sized.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -243,7 +244,7 @@ TEST(GltfLoader, TheSidecarCompletesTheModel) {
   EXPECT_EQ(plain.units, "m");
   EXPECT_DOUBLE_EQ(plain.patchSize, 0.5);  // an eighth of the 4 m extent
   writeFile("sidecar-room.walkrad.json", R"({"units": "ft", "patch_size": 0.25, "movable": false,
-      "materials": {"paint": {"emission": [2, 2, 2]}, "glass": {"omit": true}},
+      "materials": {"paint": {"emission": [2, 2, 2], "two_sided": true}, "glass": {"omit": true}},
       "objects": {"floor": {"movable": true}}, "sky": {"emission": [1, 1, 1]}})");
   const Scene scene = loadGltf(path);
   EXPECT_EQ(scene.units, "ft");
@@ -255,8 +256,15 @@ TEST(GltfLoader, TheSidecarCompletesTheModel) {
   EXPECT_TRUE(scene.objects[0].movable);  // its own entry wins over the default
   EXPECT_EQ(scene.objects[1].name, "sky");
   EXPECT_FALSE(scene.objects[1].movable);
-  // The floor, the shade and the sky: the glass is left out.
-  ASSERT_EQ(scene.surfaces.size(), 3u);
+  // The floor and the shade, both facing both ways, and the sky: the glass is left out.
+  ASSERT_EQ(scene.surfaces.size(), 5u);
+  for (size_t i : {0, 1, 2, 3}) {
+    const Surface& s = scene.surfaces[i];
+    const bool twin = std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [&](const Surface& t) {
+      return t.normal == -s.normal && t.planeOffset() == -s.planeOffset() && t.area == s.area;
+    });
+    EXPECT_TRUE(twin) << i;
+  }
   const Surface& sky = scene.surfaces.back();
   EXPECT_EQ(sky.normal, Vec3(0, -1, 0));
   EXPECT_GT(sky.outer[0].y, 2);
