@@ -12,6 +12,12 @@
 
 namespace {
 
+// What a glTF model may need beside it: its units and its sidecar.
+void addModelOptions(CLI::App* command, engine::LoadOptions& load) {
+  command->add_option("--units", load.units, "glTF: the units of the model's coordinates (m, cm, mm, in, ft; default m)");
+  command->add_option("--sidecar", load.sidecar, "glTF: the sidecar to use (default: MODEL.walkrad.json beside the model)");
+}
+
 void addAdaptOptions(CLI::App& command, app::AdaptOptions& options) {
   CLI::Option* threshold =
       command.add_option("--adapt-threshold", options.threshold,
@@ -35,6 +41,7 @@ void addSolveOptions(CLI::App* command, app::SolveOptions& solve) {
       ->check(CLI::Range(1, 64));
   command->add_flag("--quiet", solve.quiet, "no progress lines on stdout");
   addAdaptOptions(*command, solve.adapt);
+  addModelOptions(command, solve.load);
 }
 
 }  // namespace
@@ -45,7 +52,7 @@ int main(int argc, char** argv) {
 
   app::RenderOptions render;
   CLI::App* renderCommand = cli.add_subcommand("render", "render a camera view headless (OSMesa) to an image");
-  renderCommand->add_option("scene", render.scene, "scene file (.json)")->required();
+  renderCommand->add_option("scene", render.scene, "scene file (.json) or glTF model (.gltf, .glb)")->required();
   renderCommand->add_option("--out", render.out, "tone-mapped 8-bit sRGB PNG");
   renderCommand->add_option("--linear", render.linear, "linear radiance, 3-channel float PFM");
   renderCommand->add_option("--camera", render.camera, "a camera of the scene (default: `default`)");
@@ -61,7 +68,9 @@ int main(int argc, char** argv) {
 
   app::ViewOptions view;
   CLI::App* viewCommand = cli.add_subcommand("view", "open the walkthrough window (GLFW + Dear ImGui)");
-  viewCommand->add_option("scene", view.scene, "scene file (.json)")->required();
+  viewCommand->add_option("scene", view.scene, "scene file (.json) or glTF model (.gltf, .glb)")->required();
+  addModelOptions(viewCommand, view.load);
+  viewCommand->add_option("--patch-size", view.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
   viewCommand->add_option("--camera", view.camera, "start at this camera (default: `default`)");
   viewCommand->add_option("--width", view.width, "window width")->check(CLI::Range(64, 16384));
   viewCommand->add_option("--height", view.height, "window height")->check(CLI::Range(64, 16384));
@@ -75,7 +84,8 @@ int main(int argc, char** argv) {
 
   app::MeshOptions mesh;
   CLI::App* meshCommand = cli.add_subcommand("mesh", "mesh a scene or a polygon case and print statistics");
-  meshCommand->add_option("input", mesh.input, "scene file or polygon case (.json)")->required();
+  meshCommand->add_option("input", mesh.input, "scene file or polygon case (.json), or glTF model (.gltf, .glb)")->required();
+  addModelOptions(meshCommand, mesh.load);
   meshCommand->add_option("--patch-size", mesh.patchSize, "override the input's patch size")->check(CLI::PositiveNumber);
   meshCommand->add_option("--dump", mesh.dump, "write the mesh as JSON");
   meshCommand->add_option("--stats", mesh.stats, "write statistics as JSON");
@@ -83,12 +93,13 @@ int main(int argc, char** argv) {
 
   app::CheckOptions check;
   CLI::App* checkCommand = cli.add_subcommand("check", "list what in a model will light badly, where, and what walkrad does about it");
-  checkCommand->add_option("model", check.model, "scene file (.json)")->required();
+  checkCommand->add_option("model", check.model, "scene file (.json) or glTF model (.gltf, .glb)")->required();
+  addModelOptions(checkCommand, check.load);
   checkCommand->add_option("--json", check.json, "write the findings as JSON");
 
   app::ExportOptions exporting;
   CLI::App* exportCommand = cli.add_subcommand("export", "mesh and solve a scene, write it as glTF with the light in its vertex colours");
-  exportCommand->add_option("scene", exporting.scene, "scene file (.json)")->required();
+  exportCommand->add_option("scene", exporting.scene, "scene file (.json) or glTF model (.gltf, .glb)")->required();
   exportCommand->add_option("--out", exporting.out, "the glTF file: .glb (binary) or .gltf (text)")->required();
   exportCommand->add_option("--exposure", exporting.exposure, "radiance scale before clamping to COLOR_0 (default: automatic)")
       ->check(CLI::PositiveNumber);

@@ -1,4 +1,4 @@
-// Every way a scene file can be refused, in one table, so tests check ids rather than wording.
+// Every way a scene file (or a glTF model, or its sidecar) can be refused, in one table, so tests check ids rather than wording.
 #pragma once
 
 #include <ostream>
@@ -32,7 +32,14 @@ namespace engine {
   X(HoleOutsideFace, "hole is not strictly inside its face")                          \
   X(HolesTouch, "holes touch or overlap")                                             \
   X(PatchTooSmall, "patch size too small for the scene (over 100000 patches per edge)") \
-  X(BadCamera, "camera looks nowhere (position equals look_at, or up is parallel to the view)")
+  X(BadCamera, "camera looks nowhere (position equals look_at, or up is parallel to the view)") \
+  X(NotGltf, "not a readable glTF 2.0 model")                                         \
+  X(BadGltfReference, "glTF index refers to nothing")                                 \
+  X(BadAccessor, "glTF accessor does not fit its buffer")                             \
+  X(NodeLoop, "glTF node hierarchy loops or shares a node")                           \
+  X(NoTriangles, "the model has no triangles")                                        \
+  X(UnknownNode, "no top-level node of that name in the model")                       \
+  X(GltfOnly, "this option applies to glTF models only")
 
 enum class Diag {
 #define WALKRAD_DIAG_ID(id, text) id,

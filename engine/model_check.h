@@ -17,7 +17,7 @@ namespace engine {
 // warnings may, notes are worth a look.
 #define WALKRAD_MODEL_FINDINGS(X)                                                                          \
   X(DegenerateFace, Error, "degenerate face",                                                           \
-    "refuses a scene file that has one (exit 2 when loading); delete it in the modeller")               \
+    "refuses a scene file that has one (exit 2 when loading); leaves a glTF model's out; delete it in the modeller")               \
   X(DuplicateFace, Error, "duplicate face",                                                             \
     "nothing: both are meshed, both are lit and they z-fight on screen; delete one in the modeller")     \
   X(CoincidentFaces, Warning, "coincident faces",                                                       \

@@ -93,6 +93,16 @@ struct Surface {
   double planeOffset() const { return outer.empty() ? 0 : glm::dot(normal, outer.front()); }
 };
 
+// What importing a triangle model (glTF) found, for statistics and tests.
+struct ImportCounts {
+  size_t nodes = 0;       // top-level nodes (each an object when it holds triangles)
+  size_t triangles = 0;   // read: strips and fans as triangles, the sidecar's omitted materials
+                          // left out, its two-sided ones twice
+  size_t degenerate = 0;  // skipped: no area
+  size_t tJunctions = 0;  // edges split at a vertex lying on them
+  size_t singles = 0;     // surfaces that are one triangle
+};
+
 struct Scene {
   std::string file;  // as given to the loader, for messages
   std::string units = "m";
@@ -106,6 +116,7 @@ struct Scene {
   std::vector<Camera> cameras;
   std::vector<Surface> surfaces;
   Vec3 boundsMin{0}, boundsMax{0};  // of all surfaces
+  std::optional<ImportCounts> imported;  // for a glTF model
 
   const Camera* findCamera(const std::string& name) const;
   // Sets boundsMin and boundsMax from the surfaces (after loading, and after a move).

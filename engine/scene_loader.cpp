@@ -3,6 +3,7 @@
 #include "engine/contact_cutouts.h"
 #include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
+#include "engine/gltf_loader.h"
 #include "engine/json_reader.h"
 #include "engine/solid_surfaces.h"
 
@@ -336,11 +337,25 @@ std::string readInputFile(const std::string& path) {
   return text.str();
 }
 
-Scene loadScene(const std::string& path) {
+namespace {
+
+// A scene file states its own units and needs no sidecar.
+void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
+  if (!options.units.empty()) throw SceneError(Diag::GltfOnly, path, "--units", "a scene file states its own units");
+  if (!options.sidecar.empty()) throw SceneError(Diag::GltfOnly, path, "--sidecar");
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const LoadOptions& options) {
+  if (isGltfPath(path)) return loadGltf(path, options);
+  refuseGltfOptions(path, options);
   return parseScene(readInputFile(path), path);
 }
 
-Scene loadSceneFaces(const std::string& path) {
+Scene loadSceneFaces(const std::string& path, const LoadOptions& options) {
+  if (isGltfPath(path)) return loadGltfFaces(path, options);
+  refuseGltfOptions(path, options);
   return parseSceneFaces(readInputFile(path), path);
 }
 

@@ -8,9 +8,16 @@
 
 namespace engine {
 
-// Reads, validates and builds the surfaces of a scene file. Throws SceneError (file, JSON path,
-// problem) for anything that breaks the spec; nothing is returned half-loaded.
-Scene loadScene(const std::string& path);
+// What the command line may add to a model file.
+struct LoadOptions {
+  std::string units;    // glTF only: the units of the model's coordinates (else the sidecar's, else m)
+  std::string sidecar;  // glTF only: this sidecar instead of MODEL.walkrad.json beside the model
+};
+
+// Reads, validates and builds the surfaces of a scene file, or of a glTF model (.gltf, .glb:
+// gltf_loader.h). Throws SceneError (file, JSON path, problem) for anything that breaks the
+// spec, and GltfOnly for options given with a scene file; nothing is returned half-loaded.
+Scene loadScene(const std::string& path, const LoadOptions& options = {});
 
 // The same for scene text already in memory; `file` names it in messages.
 Scene parseScene(std::string_view text, const std::string& file);
@@ -19,8 +26,9 @@ Scene parseScene(std::string_view text, const std::string& file);
 // check). loadSceneFaces reads and validates like loadScene but leaves Scene::surfaces as the
 // faces themselves, one surface per face and per filled hole, in file order. preprocessSurfaces
 // then makes them the surfaces that are meshed: coplanar merging (thesis 3.2) and contact
-// cut-outs. loadScene is the one followed by the other.
-Scene loadSceneFaces(const std::string& path);
+// cut-outs. loadScene is the one followed by the other. A glTF model's faces are its triangles
+// (loadGltfFaces).
+Scene loadSceneFaces(const std::string& path, const LoadOptions& options = {});
 Scene parseSceneFaces(std::string_view text, const std::string& file);
 void preprocessSurfaces(Scene& scene);
 

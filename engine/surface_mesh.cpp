@@ -1,6 +1,9 @@
 #include "engine/surface_mesh.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 namespace engine {
 
@@ -36,6 +39,23 @@ PlaneFrame planeFrame(const Surface& s) {
   return {s.outer[longest], u, glm::cross(s.normal, u)};
 }
 
+// A triangle no longer than the patch size whose angles all reach the mesher's bound is already
+// an element the quadtree aims for, so it is its own mesh: the curved parts of modellers' models
+// are mostly such triangles, and the quadtree would cut each into about eight.
+bool isOneElement(const mesher::PolygonWithHoles& polygon, double patchSize) {
+  if (polygon.outer.size() != 3 || !polygon.holes.empty() || mesher::signedArea(polygon.outer) <= 0) return false;
+  const double minSine = std::sin(glm::radians(mesher::kAngleBoundDeg));
+  for (int k = 0; k < 3; ++k) {
+    const mesher::Vec2 a = polygon.outer[k], b = polygon.outer[(k + 1) % 3], c = polygon.outer[(k + 2) % 3];
+    const double ab = glm::length(b - a), ac = glm::length(c - a);
+    if (ab > patchSize) return false;
+    // The sine of the angle at a is twice the area over the two sides; every angle between the
+    // bound and 180 minus it is the same as every angle above the bound.
+    if (mesher::orient2(a, b, c) < minSine * ab * ac) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf) {
@@ -68,7 +88,10 @@ SurfaceMesh meshSurface(const Surface& surface) {
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher) {
   SurfaceMesh result;
   result.polygon = planePolygon(surface, surface);
-  result.mesh = mesher.mesh(result.polygon, {surface.patchSize});
+  if (isOneElement(result.polygon, surface.patchSize))
+    result.mesh = {result.polygon.outer, {{0, 1, 2, mesher::Mesh::kNone}}};
+  else
+    result.mesh = mesher.mesh(result.polygon, {surface.patchSize});
   result.positions = worldPositions(surface, result.mesh.vertices);
   return result;
 }

@@ -14,7 +14,7 @@ namespace app {
 
 int runCheck(const CheckOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const engine::Scene scene = engine::loadSceneFaces(options.model);
+  const engine::Scene scene = engine::loadSceneFaces(options.model, options.load);
   if (!options.json.empty()) checkCanWrite(options.json);
   const std::vector<engine::Finding> findings = engine::checkModel(scene);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

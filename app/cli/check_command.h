@@ -2,13 +2,16 @@
 // where it is and what walkrad does about it.
 #pragma once
 
+#include "engine/scene_loader.h"
+
 #include <string>
 
 namespace app {
 
 struct CheckOptions {
-  std::string model;  // a scene file
-  std::string json;   // the findings as JSON
+  std::string model;          // a scene file or a glTF model
+  std::string json;           // the findings as JSON
+  engine::LoadOptions load;   // glTF: units and sidecar
 };
 
 // Runs the command; returns the process exit code: 0 when the model could be checked (whatever

@@ -26,7 +26,7 @@ int runExport(const ExportOptions& options) {
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
-  const engine::Scene scene = loadForSolve(options.scene, {options.out}, options.solve.patchSize);
+  const engine::Scene scene = loadForSolve(options.scene, {options.out}, options.solve);
 
   // Meshed and solved as `walkrad render` does, then the display's vertex radiance is baked.
   const engine::MeshedScene meshed = engine::meshScene(scene);

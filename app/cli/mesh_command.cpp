@@ -1,6 +1,8 @@
 #include "app/cli/mesh_command.h"
 
+#include "app/cli/import_stats.h"
 #include "app/image/atomic_file.h"
+#include "engine/gltf_loader.h"
 #include "engine/polygon_case.h"
 #include "engine/scene_loader.h"
 #include "engine/surface_mesh.h"
@@ -59,14 +61,16 @@ OrderedJson elementJson(const std::array<uint32_t, 4>& e) {
 }  // namespace
 
 int runMesh(const MeshOptions& options) {
-  const std::string text = engine::readInputFile(options.input);
+  const bool gltf = engine::isGltfPath(options.input);
+  const std::string text = gltf ? std::string() : engine::readInputFile(options.input);
   const engine::JsonReader in(options.input);
-  const engine::Json root = in.parse(text);
+  const engine::Json root = gltf ? engine::Json::object() : in.parse(text);
 
   Tally tally;
   double meshMs = 0;
   OrderedJson dump;
-  if (engine::isPolygonCase(root)) {
+  OrderedJson imported;
+  if (!gltf && engine::isPolygonCase(root)) {
     const engine::PolygonCase polygonCase = engine::parsePolygonCase(root, in);
     const std::optional<double> patch = options.patchSize ? options.patchSize : polygonCase.patchSize;
     if (!patch) in.fail(engine::Diag::MissingField, "patch_size", "give it in the file or with --patch-size");
@@ -80,7 +84,8 @@ int runMesh(const MeshOptions& options) {
       for (const auto& e : mesh.elements) dump["elements"].push_back(elementJson(e));
     }
   } else {
-    engine::Scene scene = engine::parseScene(text, options.input);
+    engine::Scene scene = engine::loadScene(options.input, options.load);
+    imported = importStats(scene);
     if (options.patchSize)
       for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
     std::vector<engine::SurfaceMesh> meshes(scene.surfaces.size());
@@ -109,13 +114,14 @@ int runMesh(const MeshOptions& options) {
 
   if (!options.dump.empty()) writeFileAtomically(options.dump, dump.dump() + "\n");
   if (!options.stats.empty()) {
-    const OrderedJson stats = {
+    OrderedJson stats = {
         {"elements", tally.elements},   {"quads", tally.quads},
         {"triangles", tally.elements - tally.quads}, {"vertices", tally.vertices},
         {"t_vertices", tally.tVertices}, {"min_angle_deg", tally.smallestAngle},
         {"min_aspect_ratio", tally.smallestAspect}, {"below_angle_bound", tally.belowAngleBound},
         {"mesh_ms", meshMs},
     };
+    if (!imported.is_null()) stats["import"] = imported;
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   std::printf("%zu elements (%zu quads, %zu triangles), %zu vertices, %zu T-vertices, smallest angle %.2f deg "

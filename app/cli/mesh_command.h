@@ -1,13 +1,16 @@
 // `walkrad mesh`: meshes a scene or one polygon case and reports on the mesh (spec/cli.md).
 #pragma once
 
+#include "engine/scene_loader.h"
+
 #include <optional>
 #include <string>
 
 namespace app {
 
 struct MeshOptions {
-  std::string input;                 // a scene file or a polygon case
+  std::string input;                 // a scene file, a glTF model or a polygon case
+  engine::LoadOptions load;          // glTF: units and sidecar
   std::optional<double> patchSize;   // overrides the input's
   std::string dump;                  // the mesh as JSON
   std::string stats;                 // statistics as JSON

@@ -1,6 +1,7 @@
 #include "app/cli/render_command.h"
 
 #include "app/gl/headless_render.h"
+#include "app/cli/import_stats.h"
 #include "app/image/atomic_file.h"
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
@@ -65,8 +66,12 @@ int runRender(const RenderOptions& options) {
     return 2;
   }
   auto start = Clock::now();
-  engine::Scene loaded = loadForSolve(options.scene, {options.out, options.linear, options.stats}, options.solve.patchSize);
+  engine::Scene loaded = loadForSolve(options.scene, {options.out, options.linear, options.stats}, options.solve);
   const double loadMs = millisecondsSince(start);
+  // A model from a modeller often has no lamps: say why the picture will be black.
+  if (std::none_of(loaded.materials.begin(), loaded.materials.end(), [](const engine::Material& m) { return m.emission != engine::Vec3{0}; }))
+    std::cerr << "walkrad render: " << options.scene << ": nothing emits light, so the picture is black"
+              << (loaded.imported ? " (give a material an emission, or a sky, in its .walkrad.json sidecar)" : "") << "\n";
 
   ViewCamera camera;
   if (!chooseCamera(loaded, options.camera, camera)) {
@@ -171,6 +176,7 @@ int runRender(const RenderOptions& options) {
     };
     if (!moves.empty()) stats["moves"] = moveStats;
     if (adaptation) stats["adaptive_passes"] = adaptation->passes();
+    if (scene.imported) stats["import"] = importStats(scene);
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   return 0;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/cli/scene_solve.h"
+#include "engine/scene_loader.h"
 
 #include <cstdint>
 #include <optional>

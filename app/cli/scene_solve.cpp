@@ -8,13 +8,12 @@
 
 namespace app {
 
-engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs,
-                           const std::optional<double>& patchSize) {
-  engine::Scene scene = engine::loadScene(path);
+engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs, const SolveOptions& options) {
+  engine::Scene scene = engine::loadScene(path, options.load);
   for (const std::string& file : outputs)
     if (!file.empty()) checkCanWrite(file);
-  if (patchSize)
-    for (engine::Surface& s : scene.surfaces) s.patchSize = *patchSize;
+  if (options.patchSize)
+    for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
   return scene;
 }
 

@@ -6,6 +6,7 @@
 #include "engine/mesh_adaptation.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene.h"
+#include "engine/scene_loader.h"
 #include "radiosity/radiosity.h"
 
 #include <chrono>
@@ -24,13 +25,13 @@ struct SolveOptions {
   int threads = 1;                  // pxpl5 graphics processors
   bool quiet = false;               // no progress lines (stdout)
   AdaptOptions adapt;               // adaptive refinement while solving
+  engine::LoadOptions load;         // glTF: units and sidecar
 };
 
 // Loads the scene (SceneError for bad input), then checks that each non-empty `outputs` can be
 // written (std::runtime_error naming it): bad input is reported before an unwritable output,
-// and both before the long part. Applies the patch-size override.
-engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs,
-                           const std::optional<double>& patchSize);
+// and both before the long part. Applies the options' patch-size override.
+engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs, const SolveOptions& options);
 
 // The adaptive refinement to run while solving `meshed` (made from `scene`), as the options and
 // the scene's settings say, or none.

@@ -1,6 +1,7 @@
 #include "app/window/scene_edits.h"
 
 #include "app/image/atomic_file.h"
+#include "engine/gltf_loader.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_saver.h"
 
@@ -37,6 +38,9 @@ std::optional<uint32_t> SceneEdits::redo() {
 }
 
 std::string SceneEdits::save() {
+  // Rewriting a modeller's file would lose what walkrad does not read (textures, normals,
+  // animation), so poses are written only into scene files.
+  if (engine::isGltfPath(path_)) return "not saved: " + path_ + " is a glTF model; walkrad saves poses only into scene files (.json)";
   try {
     const std::string text = engine::sceneTextWithPoses(text_, editor_.scene());
     writeFileAtomically(path_, text);

@@ -13,7 +13,8 @@ namespace app {
 
 class SceneEdits {
  public:
-  // `text` is the file's text `scene` was parsed from; the scene is meshed here.
+  // `text` is the file's text `scene` was parsed from (empty for a glTF model); the scene is
+  // meshed here.
   SceneEdits(std::string path, std::string text, engine::Scene scene);
 
   engine::SceneEditor& editor() { return editor_; }
@@ -28,7 +29,8 @@ class SceneEdits {
   std::optional<uint32_t> redo();
 
   // Writes the poses into the scene's file (temporary file, then rename). Returns a one-line
-  // report: where it was saved, or why not (the file is then as it was).
+  // report: where it was saved, or why not (the file is then as it was). A glTF model is never
+  // written: the report says so.
   std::string save();
 
  private:

@@ -77,6 +77,8 @@ void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh,
   ImGui::Text("%s (%s)", std::filesystem::path(scene.file).filename().c_str(), scene.units.c_str());
   ImGui::TextDisabled("Mesh: modified quadtree (thesis ch. 5); light: progressive radiosity");
   ImGui::TextDisabled("on an emulated Pixel-Planes 5, ambient term until converged");
+  ImGui::TextDisabled("drop a .json, .gltf or .glb file here to open it");
+  if (!state.openReport.empty()) ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", state.openReport.c_str());
   ImGui::Separator();
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::Text("%.1f fps (%.2f ms a frame)", io.Framerate, 1000.0f / io.Framerate);

@@ -13,9 +13,11 @@
 #include "app/window/scene_edits.h"
 #include "app/window/scene_panel.h"
 #include "app/window/walk_controls.h"
+#include "engine/diagnostics.h"
 #include "engine/display_mesh.h"
 #include "engine/lighting.h"
 #include "engine/meshed_scene.h"
+#include "engine/gltf_loader.h"
 #include "engine/scene_loader.h"
 
 #include <ctime>
@@ -151,20 +153,244 @@ WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking
   return input;
 }
 
-}  // namespace
+// A scene opened in the window: its file's text (kept for saving poses into it; empty for a
+// glTF model, which is never written) and the scene.
+struct OpenedScene {
+  std::string path, text;
+  engine::Scene scene;
+};
 
-int runView(const ViewOptions& options) {
-  std::string text = engine::readInputFile(options.scene);
-  engine::Scene loaded = engine::parseScene(text, options.scene);
-  ViewCamera camera;
-  if (!chooseCamera(loaded, options.camera, camera)) {
-    std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
-    return 2;
+// Throws SceneError for a file that is not a valid scene or model.
+OpenedScene openScene(const std::string& path, const engine::LoadOptions& load, std::optional<double> patchSize) {
+  OpenedScene opened;
+  opened.path = path;
+  if (engine::isGltfPath(path)) {
+    opened.scene = engine::loadScene(path, load);
+  } else {
+    if (!load.units.empty() || !load.sidecar.empty())
+      throw engine::SceneError(engine::Diag::GltfOnly, path, load.units.empty() ? "--sidecar" : "--units");
+    opened.text = engine::readInputFile(path);
+    opened.scene = engine::parseScene(opened.text, path);
   }
-  SceneEdits edits(options.scene, std::move(text), std::move(loaded));
+  if (patchSize)
+    for (engine::Surface& s : opened.scene.surfaces) s.patchSize = *patchSize;
+  return opened;
+}
+
+// Files dropped onto the window since the last frame (GLFW reports them through a callback).
+std::vector<std::string> g_dropped;
+void onDrop(GLFWwindow*, int count, const char** paths) {
+  for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+}
+
+// Walks through one scene until the window closes, the frame count runs out (nothing returned)
+// or a file dropped onto the window opens (returned: the window goes on with it). A dropped file
+// that does not open leaves the scene as it is and says why in the panel.
+std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& options, OpenedScene opened, ViewCamera camera,
+                                     int& exitCode) {
+  SceneEdits edits(opened.path, std::move(opened.text), std::move(opened.scene));
   const engine::Scene& scene = edits.editor().scene();  // follows the edits
   engine::DisplayMesh mesh = engine::displayMesh(edits.editor().meshed());
   engine::shadeWithAmbient(scene, mesh);
+
+  SceneRenderer renderer;
+  renderer.upload(mesh);
+  PanelState panel;
+  panel.exposure = static_cast<float>(engine::autoExposure(mesh));
+  // The solver shoots on its own thread; each frame shows its newest snapshot.
+  engine::LightingSettings lightingSettings = options.lighting;
+  lightingSettings.adaptive = adaptiveSettings(options.adapt, scene);
+  engine::LightingThread lighting(scene, edits.editor().meshed(), lightingSettings);
+  std::shared_ptr<const engine::LightingSnapshot> shown;
+  // With adaptive refinement the display shows the lighting thread's meshes (null: the editor's).
+  std::shared_ptr<const engine::MeshedScene> shownMeshes;
+  ProgressLine progress(scene.file);
+  panel.wireframe = options.wireframe;
+  WalkSettings walk;
+  walk.speed = defaultWalkSpeed(scene);
+
+  // An object moved: the display follows at once (a surface meshed again around a footprint
+  // keeps what light it can), the light after the edit is recorded. Snapshots of the light are
+  // shown only when they are of the display's own mesh: of the last edit sent, with no remesh
+  // since.
+  uint64_t editsSent = 0;
+  bool remeshedSinceSent = false;
+  auto showMoved = [&](uint32_t object) {
+    if (edits.editor().remeshed().empty() && !shownMeshes) {
+      engine::updatePositions(edits.editor().meshed(), edits.editor().surfacesOf(object), mesh);
+      renderer.updatePositions(mesh.positions);
+      return;
+    }
+    engine::DisplayMesh fresh = engine::displayMesh(edits.editor().meshed());
+    engine::carryRadiance(mesh, fresh);
+    mesh = std::move(fresh);
+    renderer.upload(mesh);
+    remeshedSinceSent = true;
+    shownMeshes = nullptr;
+  };
+  auto relight = [&] {
+    lighting.edit(scene, edits.editor().meshed());
+    ++editsSent;
+    remeshedSinceSent = false;
+  };
+  auto recordEdit = [&](const std::optional<engine::PoseEdit>& edit) {
+    if (!edit) return;
+    edits.record(*edit);
+    relight();
+  };
+  auto afterHistoryStep = [&](std::optional<uint32_t> moved) {
+    if (!moved) return;
+    showMoved(*moved);
+    relight();
+  };
+
+  glm::dvec2 lastMouse{0};
+  bool looking = false, leftWasDown = false;
+  double lastTime = glfwGetTime();
+  for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
+    g_presses.clear();
+    glfwPollEvents();
+    const double now = glfwGetTime();
+    ObjectDrag& drag = edits.drag();
+    applyWalk(readWalkInput(window, lastMouse, looking, drag.dragging()), now - lastTime, walk, camera);
+    lastTime = now;
+    if (pressed(GLFW_KEY_F12)) panel.screenshotRequested = true;
+
+    // Picking and dragging with the left button, off the panel.
+    const bool leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (leftDown && !leftWasDown && !ImGui::GetIO().WantCaptureMouse) drag.press(cursorRay(window, camera));
+    if (leftDown && drag.dragging()) {
+      bool moved = drag.follow(cursorRay(window, camera));
+      // A wheel notch lifts by 5 cm.
+      if (g_scroll != 0) moved = drag.lift(g_scroll * 0.05 / scene.metersPerUnit) || moved;
+      if (moved) showMoved(*drag.selected());
+    }
+    g_scroll = 0;
+    if (!leftDown && leftWasDown) recordEdit(drag.release());
+    leftWasDown = leftDown;
+    if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) {
+      const auto turned = drag.turn(pressed(GLFW_KEY_R) ? 15 : -15);
+      if (drag.selected() && scene.objects[*drag.selected()].movable) showMoved(*drag.selected());
+      recordEdit(turned);
+    }
+    if (pressed(GLFW_KEY_ESCAPE)) {
+      recordEdit(drag.release());
+      drag.deselect();
+    }
+    if (pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL) || panel.undoRequested) afterHistoryStep(edits.undo());
+    if (pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL) || panel.redoRequested) afterHistoryStep(edits.redo());
+    if (pressed(GLFW_KEY_S, GLFW_MOD_CONTROL) || panel.saveRequested) {
+      panel.saveReport = edits.save();
+      std::cout << "walkrad view: " << panel.saveReport << std::endl;
+    }
+    panel.undoRequested = panel.redoRequested = panel.saveRequested = false;
+
+    std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
+    if (newest != shown) {
+      shown = std::move(newest);
+      if (shown->edits == editsSent && !remeshedSinceSent && shown->meshed && shown->meshed != shownMeshes) {
+        // The lighting thread refined or coarsened: its meshes replace the display's.
+        mesh = engine::displayMesh(*shown->meshed);
+        shownMeshes = shown->meshed;
+        mesh.radiance = shown->radiance;
+        renderer.upload(mesh);
+      } else if (shown->edits == editsSent && !remeshedSinceSent && shown->radiance.size() == mesh.positions.size()) {
+        mesh.radiance = shown->radiance;
+        renderer.updateRadiance(mesh.radiance);
+      }
+      progress.report(*shown);
+    }
+    if (panel.autoExposureRequested) {
+      panel.exposure = static_cast<float>(engine::autoExposure(mesh));
+      panel.autoExposureRequested = false;
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    panel.walkSpeed = walk.speed;
+    panel.selected.clear();
+    if (const auto selected = edits.drag().selected()) {
+      const engine::Object& o = scene.objects[*selected];
+      panel.selected = o.name;
+      panel.selectedMovable = o.movable;
+      panel.selectedPosition = o.position;
+      panel.selectedTurn = o.rotateYDeg;
+    }
+    panel.canUndo = edits.history().canUndo();
+    panel.canRedo = edits.history().canRedo();
+    panel.unsaved = edits.history().unsaved();
+    drawScenePanel(scene, mesh, *shown, panel);
+    if (panel.paused != shown->paused) lighting.setPaused(panel.paused);
+    if (panel.restartRequested) {
+      lighting.restart();
+      panel.restartRequested = false;
+    }
+    if (panel.jumpToCamera >= 0) {
+      camera = fromSceneCamera(scene.cameras[static_cast<size_t>(panel.jumpToCamera)]);
+      panel.jumpToCamera = -1;
+    }
+    ImGui::Render();
+
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    if (width > 0 && height > 0) {
+      FrameSettings settings;
+      settings.clipFromWorld = clipFromWorld(camera, static_cast<double>(width) / height, scene);
+      settings.width = width;
+      settings.height = height;
+      settings.exposure = panel.exposure;
+      settings.wireframe = panel.wireframe;
+      if (const auto selected = edits.drag().selected())
+        for (uint32_t s : edits.editor().surfacesOf(*selected))
+          settings.highlight.push_back({mesh.surfaceEdgeStart[s], mesh.surfaceEdgeStart[s + 1]});
+      renderer.draw(settings);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+      const bool last = options.frames > 0 && frame >= options.frames;
+      std::string shot;
+      if (panel.screenshotRequested) shot = screenshotName(scene);
+      if (last && !options.screenshot.empty()) shot = options.screenshot;
+      if (!shot.empty()) {
+        panel.screenshotRequested = false;
+        try {
+          writePng(shot, readFramebuffer(width, height, GL_BACK));  // before the swap
+          std::cout << "screenshot: " << shot << std::endl;
+          panel.lastScreenshot = shot;
+        } catch (const std::exception& e) {  // a failed screenshot must not end the walk
+          std::cerr << "walkrad view: " << e.what() << "\n";
+          panel.lastScreenshot = "(failed) " + shot;
+          if (last) exitCode = 1;
+        }
+      }
+    }
+    if (!g_dropped.empty()) {
+      const std::string path = g_dropped.back();  // of several files, the last
+      g_dropped.clear();
+      try {
+        OpenedScene next = openScene(path, {}, std::nullopt);
+        std::cout << "walkrad view: opened " << path << std::endl;
+        return next;
+      } catch (const engine::SceneError& e) {
+        panel.openReport = e.what();
+        std::cerr << "walkrad view: " << e.what() << std::endl;
+      }
+    }
+    glfwSwapBuffers(window);
+    if (options.frames > 0 && frame >= options.frames) break;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+int runView(const ViewOptions& options) {
+  OpenedScene opened = openScene(options.scene, options.load, options.patchSize);
+  ViewCamera camera;
+  if (!chooseCamera(opened.scene, options.camera, camera)) {
+    std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
+    return 2;
+  }
 
   const GlfwSession glfw;
   if (!glfw.ok) {
@@ -175,7 +401,7 @@ int runView(const ViewOptions& options) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  const std::string title = "walkrad - " + std::filesystem::path(scene.file).filename().string();
+  const std::string title = "walkrad - " + std::filesystem::path(opened.path).filename().string();
   GLFWwindow* window = glfwCreateWindow(options.width, options.height, title.c_str(), nullptr, nullptr);
   if (!window) {
     std::cerr << "walkrad view: cannot open a window with an OpenGL 3.3 core context\n";
@@ -190,185 +416,17 @@ int runView(const ViewOptions& options) {
   }
   glfwSetScrollCallback(window, onScroll);  // before ImGui installs and chains its callbacks
   glfwSetKeyCallback(window, onKey);
+  glfwSetDropCallback(window, onDrop);
   // A key pressed and released between two frames still reads as pressed once (F12, taps).
   glfwSetInputMode(window, GLFW_STICKY_KEYS, GLFW_TRUE);
 
   int exitCode = 0;
   {
     const ImGuiSession imgui(window);
-    SceneRenderer renderer;
-    renderer.upload(mesh);
-    PanelState panel;
-    panel.exposure = static_cast<float>(engine::autoExposure(mesh));
-    // The solver shoots on its own thread; each frame shows its newest snapshot.
-    engine::LightingSettings lightingSettings = options.lighting;
-    lightingSettings.adaptive = adaptiveSettings(options.adapt, scene);
-    engine::LightingThread lighting(scene, edits.editor().meshed(), lightingSettings);
-    std::shared_ptr<const engine::LightingSnapshot> shown;
-    // With adaptive refinement the display shows the lighting thread's meshes (null: the editor's).
-    std::shared_ptr<const engine::MeshedScene> shownMeshes;
-    ProgressLine progress(scene.file);
-    panel.wireframe = options.wireframe;
-    WalkSettings walk;
-    walk.speed = defaultWalkSpeed(scene);
-
-    // An object moved: the display follows at once (a surface meshed again around a footprint
-    // keeps what light it can), the light after the edit is recorded. Snapshots of the light are
-    // shown only when they are of the display's own mesh: of the last edit sent, with no remesh
-    // since.
-    uint64_t editsSent = 0;
-    bool remeshedSinceSent = false;
-    auto showMoved = [&](uint32_t object) {
-      if (edits.editor().remeshed().empty() && !shownMeshes) {
-        engine::updatePositions(edits.editor().meshed(), edits.editor().surfacesOf(object), mesh);
-        renderer.updatePositions(mesh.positions);
-        return;
-      }
-      engine::DisplayMesh fresh = engine::displayMesh(edits.editor().meshed());
-      engine::carryRadiance(mesh, fresh);
-      mesh = std::move(fresh);
-      renderer.upload(mesh);
-      remeshedSinceSent = true;
-      shownMeshes = nullptr;
-    };
-    auto relight = [&] {
-      lighting.edit(scene, edits.editor().meshed());
-      ++editsSent;
-      remeshedSinceSent = false;
-    };
-    auto recordEdit = [&](const std::optional<engine::PoseEdit>& edit) {
-      if (!edit) return;
-      edits.record(*edit);
-      relight();
-    };
-    auto afterHistoryStep = [&](std::optional<uint32_t> moved) {
-      if (!moved) return;
-      showMoved(*moved);
-      relight();
-    };
-
-    glm::dvec2 lastMouse{0};
-    bool looking = false, leftWasDown = false;
-    double lastTime = glfwGetTime();
-    for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
-      g_presses.clear();
-      glfwPollEvents();
-      const double now = glfwGetTime();
-      ObjectDrag& drag = edits.drag();
-      applyWalk(readWalkInput(window, lastMouse, looking, drag.dragging()), now - lastTime, walk, camera);
-      lastTime = now;
-      if (pressed(GLFW_KEY_F12)) panel.screenshotRequested = true;
-
-      // Picking and dragging with the left button, off the panel.
-      const bool leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-      if (leftDown && !leftWasDown && !ImGui::GetIO().WantCaptureMouse) drag.press(cursorRay(window, camera));
-      if (leftDown && drag.dragging()) {
-        bool moved = drag.follow(cursorRay(window, camera));
-        // A wheel notch lifts by 5 cm.
-        if (g_scroll != 0) moved = drag.lift(g_scroll * 0.05 / scene.metersPerUnit) || moved;
-        if (moved) showMoved(*drag.selected());
-      }
-      g_scroll = 0;
-      if (!leftDown && leftWasDown) recordEdit(drag.release());
-      leftWasDown = leftDown;
-      if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) {
-        const auto turned = drag.turn(pressed(GLFW_KEY_R) ? 15 : -15);
-        if (drag.selected() && scene.objects[*drag.selected()].movable) showMoved(*drag.selected());
-        recordEdit(turned);
-      }
-      if (pressed(GLFW_KEY_ESCAPE)) {
-        recordEdit(drag.release());
-        drag.deselect();
-      }
-      if (pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL) || panel.undoRequested) afterHistoryStep(edits.undo());
-      if (pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL) || panel.redoRequested) afterHistoryStep(edits.redo());
-      if (pressed(GLFW_KEY_S, GLFW_MOD_CONTROL) || panel.saveRequested) {
-        panel.saveReport = edits.save();
-        std::cout << "walkrad view: " << panel.saveReport << std::endl;
-      }
-      panel.undoRequested = panel.redoRequested = panel.saveRequested = false;
-
-      std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
-      if (newest != shown) {
-        shown = std::move(newest);
-        if (shown->edits == editsSent && !remeshedSinceSent && shown->meshed && shown->meshed != shownMeshes) {
-          // The lighting thread refined or coarsened: its meshes replace the display's.
-          mesh = engine::displayMesh(*shown->meshed);
-          shownMeshes = shown->meshed;
-          mesh.radiance = shown->radiance;
-          renderer.upload(mesh);
-        } else if (shown->edits == editsSent && !remeshedSinceSent && shown->radiance.size() == mesh.positions.size()) {
-          mesh.radiance = shown->radiance;
-          renderer.updateRadiance(mesh.radiance);
-        }
-        progress.report(*shown);
-      }
-      if (panel.autoExposureRequested) {
-        panel.exposure = static_cast<float>(engine::autoExposure(mesh));
-        panel.autoExposureRequested = false;
-      }
-
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      ImGui::NewFrame();
-      panel.walkSpeed = walk.speed;
-      panel.selected.clear();
-      if (const auto selected = edits.drag().selected()) {
-        const engine::Object& o = scene.objects[*selected];
-        panel.selected = o.name;
-        panel.selectedMovable = o.movable;
-        panel.selectedPosition = o.position;
-        panel.selectedTurn = o.rotateYDeg;
-      }
-      panel.canUndo = edits.history().canUndo();
-      panel.canRedo = edits.history().canRedo();
-      panel.unsaved = edits.history().unsaved();
-      drawScenePanel(scene, mesh, *shown, panel);
-      if (panel.paused != shown->paused) lighting.setPaused(panel.paused);
-      if (panel.restartRequested) {
-        lighting.restart();
-        panel.restartRequested = false;
-      }
-      if (panel.jumpToCamera >= 0) {
-        camera = fromSceneCamera(scene.cameras[static_cast<size_t>(panel.jumpToCamera)]);
-        panel.jumpToCamera = -1;
-      }
-      ImGui::Render();
-
-      int width = 0, height = 0;
-      glfwGetFramebufferSize(window, &width, &height);
-      if (width > 0 && height > 0) {
-        FrameSettings settings;
-        settings.clipFromWorld = clipFromWorld(camera, static_cast<double>(width) / height, scene);
-        settings.width = width;
-        settings.height = height;
-        settings.exposure = panel.exposure;
-        settings.wireframe = panel.wireframe;
-        if (const auto selected = edits.drag().selected())
-          for (uint32_t s : edits.editor().surfacesOf(*selected))
-            settings.highlight.push_back({mesh.surfaceEdgeStart[s], mesh.surfaceEdgeStart[s + 1]});
-        renderer.draw(settings);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
-        const bool last = options.frames > 0 && frame >= options.frames;
-        std::string shot;
-        if (panel.screenshotRequested) shot = screenshotName(scene);
-        if (last && !options.screenshot.empty()) shot = options.screenshot;
-        if (!shot.empty()) {
-          panel.screenshotRequested = false;
-          try {
-            writePng(shot, readFramebuffer(width, height, GL_BACK));  // before the swap
-            std::cout << "screenshot: " << shot << std::endl;
-            panel.lastScreenshot = shot;
-          } catch (const std::exception& e) {  // a failed screenshot must not end the walk
-            std::cerr << "walkrad view: " << e.what() << "\n";
-            panel.lastScreenshot = "(failed) " + shot;
-            if (last) exitCode = 1;
-          }
-        }
-      }
-      glfwSwapBuffers(window);
-      if (options.frames > 0 && frame >= options.frames) break;
+    for (auto next = walkScene(window, options, std::move(opened), camera, exitCode); next;
+         next = walkScene(window, options, std::move(*next), camera, exitCode)) {
+      chooseCamera(next->scene, "", camera);
+      glfwSetWindowTitle(window, ("walkrad - " + std::filesystem::path(next->path).filename().string()).c_str());
     }
   }
   glfwDestroyWindow(window);

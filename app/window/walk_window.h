@@ -3,13 +3,17 @@
 
 #include "app/cli/adapt_options.h"
 #include "engine/lighting.h"
+#include "engine/scene_loader.h"
 
+#include <optional>
 #include <string>
 
 namespace app {
 
 struct ViewOptions {
   std::string scene;
+  engine::LoadOptions load;  // glTF: units and sidecar
+  std::optional<double> patchSize;  // none: the scene's
   std::string camera;      // empty: the scene's default
   int width = 1280, height = 720;
   int frames = 0;          // > 0: close after this many frames (scripts, tests)

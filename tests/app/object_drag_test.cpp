@@ -112,5 +112,19 @@ TEST(SceneEdits, SavingWritesThePosesAndAFailedSaveLosesNothing) {
   std::filesystem::remove_all(folder);
 }
 
+// A glTF model's objects move, but the model is not rewritten: the save says so and the file
+// stays byte for byte.
+TEST(ObjectDrag, SavingAGltfModelIsRefusedWithAReason) {
+  const std::string path = std::string(WALKRAD_SOURCE) + "/tests/cli/no_light.gltf";
+  const std::string before = engine::readInputFile(path);
+  SceneEdits edits(path, "", engine::loadScene(path));
+  ASSERT_TRUE(edits.editor().setPose(0, {engine::Vec3(0.5, 0, 0), 0}));
+  edits.record({0, {engine::Vec3(0), 0}, {engine::Vec3(0.5, 0, 0), 0}});
+  const std::string report = edits.save();
+  EXPECT_EQ(report, "not saved: " + path + " is a glTF model; walkrad saves poses only into scene files (.json)");
+  EXPECT_TRUE(edits.history().unsaved());
+  EXPECT_EQ(engine::readInputFile(path), before);
+}
+
 }  // namespace
 }  // namespace app

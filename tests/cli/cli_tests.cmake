@@ -126,3 +126,21 @@ walkrad_cli_test(export_unwritable 1 ARGS export ${PROJECT_SOURCE_DIR}/assets/co
                  STDERR "lit.glb: cannot create")
 walkrad_cli_test(export_bad_exposure 2 ARGS export ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.glb --exposure -1
                  STDERR "^walkrad: .*exposure")
+
+walkrad_cli_test(truncated_gltf 2 ARGS render ${cli_dir}/truncated.gltf --out ${out}/trunc-gltf.png
+                 STDERR "truncated.gltf: not a readable glTF 2.0 model: .*parse error" NO_FILE ${out}/trunc-gltf.png)
+walkrad_cli_test(units_for_scene_file 2 ARGS mesh ${PROJECT_SOURCE_DIR}/assets/cornell.json --units cm
+                 STDERR "cornell.json: --units: this option applies to glTF models only")
+# A model without lamps renders (black), saying why and how to light it.
+walkrad_cli_test(gltf_without_light 0 ARGS render ${cli_dir}/no_light.gltf --out ${out}/no-light.png --quiet
+                 STDERR "no_light.gltf: nothing emits light, so the picture is black \\(give a material an emission, or a sky, in its .walkrad.json sidecar\\)"
+                 FILE ${out}/no-light.png)
+
+# check and export take glTF models as the other subcommands do: check looks at each triangle
+# (the floor's two), export bakes the model's light.
+walkrad_cli_test(check_gltf 0 ARGS check ${cli_dir}/no_light.gltf STDOUT "no_light.gltf: 2 faces checked in [0-9.e-]+ ms: 0 findings")
+walkrad_cli_test(check_truncated_gltf 2 ARGS check ${cli_dir}/truncated.gltf STDERR "truncated.gltf: not a readable glTF 2.0 model")
+walkrad_cli_test(check_units_for_scene_file 2 ARGS check ${PROJECT_SOURCE_DIR}/assets/cornell.json --units cm
+                 STDERR "cornell.json: --units: this option applies to glTF models only")
+walkrad_cli_test(export_gltf_model 0 ARGS export ${cli_dir}/no_light.gltf --out ${out}/no-light-export.glb --quiet
+                 FILE ${out}/no-light-export.glb)

@@ -2,6 +2,7 @@
 // the same triangles and areas per object, the baked colours, and what glTF requires of the
 // file (accessor bounds, alignment, unlit materials).
 #include "engine/gltf_export.h"
+#include "engine/gltf_loader.h"
 #include "engine/lighting.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <map>
@@ -202,6 +204,41 @@ TEST(GltfExport, EmptySceneIsStillValid) {
   const tinygltf::Model model = read(exportGltf(scene, mesh), true, tinygltf::REQUIRE_VERSION);
   EXPECT_TRUE(model.nodes.empty());
   EXPECT_EQ(model.materials.size(), 1u);
+}
+
+// Export, then import through walkrad's own glTF loader: the objects by name, each material's
+// reflectance and emission (kept in extras), and per object and material the same area, in the
+// same planes, now in metres. The exported elements merge back into planar surfaces.
+TEST(GltfExport, ImportBringsBackObjectsMaterialsAndGeometry) {
+  const Lit& lit = litCornell();
+  const Scene back = parseGltf(exportGltf(lit.scene, lit.mesh, {.exposure = 1, .binary = true}), "cornell-export.glb");
+
+  ASSERT_EQ(back.objects.size(), lit.scene.objects.size());
+  for (size_t i = 0; i < back.objects.size(); ++i) EXPECT_EQ(back.objects[i].name, lit.scene.objects[i].name);
+  ASSERT_EQ(back.materials.size(), lit.scene.materials.size());
+  for (size_t i = 0; i < back.materials.size(); ++i) {
+    EXPECT_EQ(back.materials[i].name, lit.scene.materials[i].name);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(back.materials[i].reflectance[c], lit.scene.materials[i].reflectance[c], 1e-12);
+      EXPECT_NEAR(back.materials[i].emission[c], lit.scene.materials[i].emission[c], 1e-9 * (1 + lit.scene.materials[i].emission[c]));
+    }
+  }
+
+  // Areas in square metres per object and material, and the planes they lie in.
+  const double m = lit.scene.metersPerUnit;
+  std::map<std::pair<uint32_t, uint32_t>, double> before, after;
+  for (const Surface& s : lit.scene.surfaces) before[{s.object, s.material}] += s.area * m * m;
+  for (const Surface& s : back.surfaces) {
+    after[{s.object, s.material}] += s.area;
+    const bool inAPlaneOfBefore = std::any_of(lit.scene.surfaces.begin(), lit.scene.surfaces.end(), [&](const Surface& o) {
+      return o.object == s.object && glm::dot(o.normal, s.normal) > 1 - 1e-6 && std::abs(o.planeOffset() * m - s.planeOffset()) < 1e-6;
+    });
+    EXPECT_TRUE(inAPlaneOfBefore) << s.face;
+  }
+  ASSERT_EQ(after.size(), before.size());
+  for (const auto& [key, area] : before) EXPECT_NEAR(after[key], area, 1e-5 * area);
+  // Whole walls again, not the exported elements.
+  EXPECT_LE(back.surfaces.size(), 2 * lit.scene.surfaces.size());
 }
 
 }  // namespace
