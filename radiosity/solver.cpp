@@ -388,6 +388,9 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       }
       ++nearCount;
     } else {
+      // A far receiver whose back faces the centre gets nothing but lost light whatever its
+      // factor: its pixel count, right in sum over many such receivers, stands.
+      if (glm::dot(normal[j], eye) <= offset[j]) continue;
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
       const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
