@@ -36,7 +36,7 @@ void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<rad
                const radiosity::SolverSettings& settings);
 
 struct LightingSettings {
-  radiosity::SolverSettings solver;
+  radiosity::SolverSettings solver{.overshoot = true};
   double converge = 1e-3;             // shooting stops once the unshot fraction is below this
   double publishSeconds = 1.0 / 30;   // snapshots at most this often while shooting
 };

@@ -95,6 +95,7 @@ int runRender(const RenderOptions& options) {
   start = Clock::now();
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = options.threads;
+  settings.overshoot = true;
   auto solver = std::make_unique<radiosity::Solver>(engine::radiosityInput(editor.scene(), editor.meshed()), settings);
   auto lastReport = start;
   const auto solve = [&](const char* what) {
