@@ -42,7 +42,7 @@ void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<rad
                const radiosity::SolverSettings& settings);
 
 struct LightingSettings {
-  radiosity::SolverSettings solver;
+  radiosity::SolverSettings solver{.overshoot = true};
   // Adaptive refinement while shooting (MeshAdaptation; only for a thread made from a scene).
   std::optional<radiosity::RefinementSettings> adaptive;
   double converge = 1e-3;             // shooting stops once the unshot fraction is below this

@@ -107,20 +107,23 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
     light.weight = glm::dvec3(0);
     light.sets = 1;
     for (int channel = 0; channel < 3; ++channel) {
-      double total = 0;
+      // Shares of both signs (unshot light left negative by overshooting or an edit) would put
+      // the moments anywhere as they cancel: the points are where the light's magnitude is.
+      double total = 0, magnitude = 0;
       glm::dvec2 first{0};
       glm::dvec3 second{0};
       for (uint32_t k = node.first; k < node.last; ++k) {
-        const double w = shares[k][channel];
+        const double w = shares[k][channel], m = std::abs(w);
         const glm::dvec2 p = tree.plane[k];
         total += w;
-        first += w * p;
-        second += w * (glm::dvec3(p.x * p.x, p.x * p.y, p.y * p.y) + tree.spread[k]);
+        magnitude += m;
+        first += m * p;
+        second += m * (glm::dvec3(p.x * p.x, p.x * p.y, p.y * p.y) + tree.spread[k]);
       }
       light.weight[channel] = total;
-      if (!(total > 0)) continue;
-      const glm::dvec2 mean = first / total;
-      const glm::dvec3 c = second / total - glm::dvec3(mean.x * mean.x, mean.x * mean.y, mean.y * mean.y);
+      if (!(magnitude > 0)) continue;
+      const glm::dvec2 mean = first / magnitude;
+      const glm::dvec3 c = second / magnitude - glm::dvec3(mean.x * mean.x, mean.x * mean.y, mean.y * mean.y);
       // The covariance's principal axes: a rectangle lit evenly gets its Gauss points.
       const double half = 0.5 * (c.x + c.z), difference = 0.5 * (c.x - c.z);
       const double root = std::sqrt(difference * difference + c.y * c.y);
@@ -137,11 +140,11 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
     // radius of them: the factor then moves by about that much over the distance, under 1% where
     // points are used. A colour that varies more across the node needs its own points.
     int lit = 0;
-    while (lit < 2 && !(light.weight[lit] > 0)) ++lit;
+    while (lit < 2 && light.weight[lit] == 0.0) ++lit;
     light.mean[0] = light.mean[lit];
     light.points[0] = light.points[lit];
     const auto alike = [&](int channel) {
-      if (!(light.weight[channel] > 0)) return true;
+      if (light.weight[channel] == 0.0) return true;
       for (int k = 0; k < 4; ++k)
         if (glm::length(light.points[channel][k] - light.points[0][k]) > 0.02 * node.radius) return false;
       return glm::length(light.mean[channel] - light.mean[0]) <= 0.02 * node.radius;

@@ -24,13 +24,16 @@
 // Each receiver j whose front faces the shooter then gets dB_j = rho_j dB F_pj A_p / A_j: the
 // reciprocity relation F_jp = F_pj A_p / A_j turns the shooter's factor into the receiver's
 // (leaving out A_p / A_j is the UNC program's other failure). dB_j is added to j's radiance and,
-// as unshot light, to j's patch, weighted by j's share of the patch's area.
+// as unshot light, to j's patch, weighted by j's share of the patch's area. With
+// SolverSettings::overshoot, dB also holds what p will reflect of the unshot light its frame
+// sees (overshoot.h), and p is left with that much negative unshot light.
 #include "radiosity/radiosity.h"
 
 #include "radiosity/ambient.h"
 #include "radiosity/form_factors.h"
 #include "radiosity/item_buffer.h"
 #include "radiosity/near_field.h"
+#include "radiosity/overshoot.h"
 
 #include "pxpl5/hemisphere.h"
 
@@ -388,6 +391,9 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       }
       ++nearCount;
     } else {
+      // A far receiver whose back faces the centre gets nothing but lost light whatever its
+      // factor: its pixel count, right in sum over many such receivers, stands.
+      if (glm::dot(normal[j], eye) <= offset[j]) continue;
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
       const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
@@ -408,23 +414,35 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
 }
 
 void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
-  const glm::dvec3 dB = unshot[p];
+  const pxpl5::HemisphereFrame& frame = chosen ? *chosen : frameFrom(p, patchCentre[p]);
+  // Overshooting (overshoot.h): the patch also sends what it will reflect of the unshot light it
+  // sees, and keeps that much negative unshot light for the light to come back to. At most its
+  // unshot light, and only where that is positive: a patch is never left with more light than
+  // it had, or one whose overshoot does not come back (what it sees does not shoot) would shoot
+  // its own overshoot again and again.
+  glm::dvec3 over{0};
+  if (settings.overshoot) {
+    const glm::dvec3 expected = surfaces[patchSurface[p]].reflectance *
+                                gatherUnshot(frame.factors, patchCentre[p], {normal, offset, surfaceOf}, elementUnshot);
+    for (int c = 0; c < 3; ++c) over[c] = std::clamp(expected[c], 0.0, std::max(unshot[p][c], 0.0));
+  }
+  const glm::dvec3 dB = unshot[p] + over;
   // Each element's share of the patch's unshot power per channel: the near field sees the
   // patch's elements one by one, so a patch brighter at one end lights its near receivers so.
   shares.clear();
   for (uint32_t e : elementsOf(p)) {
     glm::dvec3 w = area[e] / patchArea[p] * glm::dvec3(1);
     for (int c = 0; c < 3; ++c)
-      if (dB[c] != 0) w[c] = area[e] * elementUnshot[e][c] / (patchArea[p] * dB[c]);
+      if (dB[c] != 0) w[c] = area[e] * (elementUnshot[e][c] + over[c]) / (patchArea[p] * dB[c]);
     shares.push_back(w);
-    elementUnshot[e] = glm::dvec3(0);
+    elementUnshot[e] = -over;
   }
   lightPatchTree(trees[p], shares, nodeLight);
-  unshot[p] = glm::dvec3(0);
+  unshot[p] = -over;
   shot[p] += dB;
   history.push_back({p, dB});
   // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
-  const glm::dvec3 escaped = distribute(p, chosen, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
+  const glm::dvec3 escaped = distribute(p, &frame, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
     receive(j, patchArea[p], dB, front, back);
   });
   stats.escapedPower += kPi * dB * patchArea[p] * escaped;

@@ -31,9 +31,7 @@ int runExport(const ExportOptions& options) {
   // Meshed and solved as `walkrad render` does, then the display's vertex radiance is baked.
   const engine::MeshedScene meshed = engine::meshScene(scene);
   const std::unique_ptr<engine::MeshAdaptation> adaptation = adaptationFor(options.solve, scene, meshed);
-  radiosity::SolverSettings settings;
-  settings.graphicsProcessors = options.solve.threads;
-  radiosity::Solver solver(adaptation ? adaptation->input() : engine::radiosityInput(scene, meshed), settings);
+  radiosity::Solver solver(adaptation ? adaptation->input() : engine::radiosityInput(scene, meshed), solverSettings(options.solve));
   solveWithProgress(solver, options.solve, "export", "solved", start, adaptation.get());
   engine::DisplayMesh mesh = engine::displayMesh(adaptation ? adaptation->meshed() : meshed);
   engine::displayRadiance(solver, mesh.radiance);

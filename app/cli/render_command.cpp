@@ -94,8 +94,7 @@ int runRender(const RenderOptions& options) {
 
   // Solve first (progress on stdout about once a second), then light the display from it.
   start = Clock::now();
-  radiosity::SolverSettings settings;
-  settings.graphicsProcessors = options.solve.threads;
+  const radiosity::SolverSettings settings = solverSettings(options.solve);
   // With adaptive refinement the solver lights the adaptation's meshes, which follow the light.
   const std::unique_ptr<engine::MeshAdaptation> adaptation = adaptationFor(options.solve, editor.scene(), editor.meshed());
   auto solver = std::make_unique<radiosity::Solver>(

@@ -17,6 +17,10 @@ engine::Scene loadForSolve(const std::string& path, const std::vector<std::strin
   return scene;
 }
 
+radiosity::SolverSettings solverSettings(const SolveOptions& options) {
+  return {.graphicsProcessors = options.threads, .overshoot = true};
+}
+
 std::unique_ptr<engine::MeshAdaptation> adaptationFor(const SolveOptions& options, const engine::Scene& scene,
                                                       const engine::MeshedScene& meshed) {
   const auto settings = adaptiveSettings(options.adapt, scene);

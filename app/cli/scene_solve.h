@@ -33,6 +33,10 @@ struct SolveOptions {
 // and both before the long part. Applies the options' patch-size override.
 engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs, const SolveOptions& options);
 
+// The solver's settings for the options: their graphics processors, with overshooting (the
+// application's choice; radiosity/overshoot.h).
+radiosity::SolverSettings solverSettings(const SolveOptions& options);
+
 // The adaptive refinement to run while solving `meshed` (made from `scene`), as the options and
 // the scene's settings say, or none.
 std::unique_ptr<engine::MeshAdaptation> adaptationFor(const SolveOptions& options, const engine::Scene& scene,

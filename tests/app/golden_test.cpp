@@ -40,6 +40,7 @@ ImageRgb8 renderSolved(const GoldenCase& c) {
   engine::DisplayMesh mesh = engine::displayMesh(meshed);
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = 2;  // the machine's two cores; the pictures do not depend on it
+  settings.overshoot = true;       // as the application solves
   radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
   engine::solveTo(solver, c.converge, UINT64_MAX);
   EXPECT_LE(solver.unshotFraction(), c.converge);

@@ -160,12 +160,12 @@ constexpr int kPaths = 20000;  // noise about 0.6%, under the 1% the test asks o
 constexpr int kPaths = 40000;
 #endif
 
-TEST(RadiosityCornell, AgreesWithPathTracer) {
+void expectAgreesWithPathTracer(const SolverSettings& settings) {
   const engine::Scene scene = engine::loadScene(WALKRAD_ASSETS "/cornell.json");
   std::vector<Surface> surfaces = test::cornellBox();
   // Shooting patches as the engine groups them.
   for (Surface& s : surfaces) s.patchOfElement = groupIntoPatches(s, engine::kShootingPatchPatches * scene.patchSize);
-  Solver solver(surfaces);
+  Solver solver(surfaces, settings);
   solver.solve(1e-4);
 
   const Probe probes[] = {
@@ -229,6 +229,15 @@ TEST(RadiosityCornell, AgreesWithPathTracer) {
       EXPECT_NEAR(solved[k], mean[k], 0.03 * mean[k]) << probe.name << " channel " << k;
     }
   }
+}
+
+TEST(RadiosityCornell, AgreesWithPathTracer) { expectAgreesWithPathTracer({}); }
+
+// As the application solves (SolverSettings::overshoot).
+TEST(RadiosityCornell, AgreesWithPathTracerOvershooting) {
+  SolverSettings settings;
+  settings.overshoot = true;
+  expectAgreesWithPathTracer(settings);
 }
 
 }  // namespace
