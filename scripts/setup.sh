@@ -7,7 +7,7 @@ packages=(
   cmake ninja-build g++ pkg-config python3-glad
   libglfw3-dev libglm-dev libosmesa6-dev libtinygltf-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
-  xvfb xauth
+  xvfb xauth python3-xlib
 )
 
 missing=()
