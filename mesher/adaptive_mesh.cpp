@@ -13,14 +13,6 @@ namespace {
 
 constexpr Side kSides[] = {Side::West, Side::East, Side::South, Side::North};
 
-void leavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out) {
-  if (tree[q].isLeaf()) {
-    out.push_back(q);
-    return;
-  }
-  for (int32_t c = 0; c < 4; ++c) leavesBelow(tree, tree[q].firstChild + c, out);
-}
-
 // False for a quadrant whose parent (or an ancestor's) has since been merged away.
 bool inTree(const Quadtree& tree, int32_t q) {
   while (q != 0) {
@@ -121,7 +113,7 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
     } else {
       removeLeafElements(change.quadrant, delta);
     }
-    if (inTree(tree, change.quadrant)) leavesBelow(tree, change.quadrant, fresh);
+    if (inTree(tree, change.quadrant)) tree.leavesBelow(change.quadrant, fresh);
   }
   tree.changes.clear();
   std::sort(fresh.begin(), fresh.end());
@@ -159,7 +151,7 @@ MeshDelta AdaptiveMesh::refine(ElementId e) {
     return {};
   }
   std::vector<int32_t> seeds;
-  leavesBelow(tree, q, seeds);
+  tree.leavesBelow(q, seeds);
   balanceAround(tree, std::move(seeds));
   return applyChanges(firstNewVertex);
 }
@@ -302,7 +294,7 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
   // beyond the box).
   std::vector<int32_t> seeds = around;
   for (const Quadtree::Change& change : tree.changes)
-    if (!change.isMerge()) leavesBelow(tree, change.quadrant, seeds);
+    if (!change.isMerge()) tree.leavesBelow(change.quadrant, seeds);
   balanceAround(tree, std::move(seeds));
   holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
   return {static_cast<int>(holes_.size() - 1), applyChanges(firstNewVertex, around)};

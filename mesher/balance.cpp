@@ -4,19 +4,6 @@
 
 namespace mesher {
 
-namespace {
-
-// A split may go deeper than one level where a child breaks a storage rule.
-void pushLeavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out) {
-  if (tree[q].isLeaf()) {
-    out.push_back(q);
-    return;
-  }
-  for (int32_t c = 0; c < 4; ++c) pushLeavesBelow(tree, tree[q].firstChild + c, out);
-}
-
-}  // namespace
-
 size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
   size_t splits = 0;
   std::vector<int32_t> across;
@@ -37,7 +24,7 @@ size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
           continue;
         }
         tree.quadrants[static_cast<size_t>(n)].forced = true;
-        pushLeavesBelow(tree, n, seeds);
+        tree.leavesBelow(n, seeds);
         seeds.push_back(q);  // its neighbour there may still be too coarse
         ++splits;
       }

@@ -337,6 +337,15 @@ void Quadtree::leaves(std::vector<int32_t>& out) const {
   }
 }
 
+void Quadtree::leavesBelow(int32_t q, std::vector<int32_t>& out) const {
+  const Quadrant& quad = quadrants[static_cast<size_t>(q)];
+  if (quad.isLeaf()) {
+    out.push_back(q);
+    return;
+  }
+  for (int32_t c = 0; c < 4; ++c) leavesBelow(quad.firstChild + c, out);
+}
+
 int32_t Quadtree::leafAt(Vec2 p) const {
   const double root = std::exp2(maxDepth);
   if (!(p.x >= 0 && p.y >= 0 && p.x < root && p.y < root)) return -1;

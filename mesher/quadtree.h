@@ -61,6 +61,9 @@ class Quadtree {
   // Leaves only, in tree order (into `out`, replacing what it held).
   std::vector<int32_t> leaves() const;
   void leaves(std::vector<int32_t>& out) const;
+  // The leaves below quadrant q (q itself when it is a leaf), in tree order, appended to `out`;
+  // a split may have gone deeper than one level where a child broke a storage rule.
+  void leavesBelow(int32_t q, std::vector<int32_t>& out) const;
   // The leaf whose half-open square [x, x + s) x [y, y + s) holds p; -1 outside the root.
   int32_t leafAt(Vec2 p) const;
   // The leaves sharing part of `side` of leaf q (one coarser or equal leaf, or several finer),

@@ -8,15 +8,6 @@ namespace mesher {
 
 namespace {
 
-// A split may go deeper than one level where a child breaks a storage rule.
-void leavesBelow(const Quadtree& tree, int32_t q, std::vector<int32_t>& out) {
-  if (tree[q].isLeaf()) {
-    out.push_back(q);
-    return;
-  }
-  for (int32_t c = 0; c < 4; ++c) leavesBelow(tree, tree[q].firstChild + c, out);
-}
-
 // Whether leaf q's vertex lies within a quarter of the leaf's size of a side, not on it: only
 // then is there a strip between them thin enough to fail (elsewhere the check would cost about
 // as much as meshing the leaf).
@@ -56,7 +47,7 @@ size_t QualityRefiner::refine() {
     bool reached = false;
     for (int depth = 0; depth < kDeeper && !reached && tree.splitLeaf(at); ++depth) {
       const size_t from = seeds_.size();
-      leavesBelow(tree, at, seeds_);
+      tree.leavesBelow(at, seeds_);
       reached = true;
       for (size_t i = from; i < seeds_.size(); ++i)
         if (tree[seeds_[i]].vertex >= 0 && !reachesBound(seeds_[i])) reached = false, at = seeds_[i];

@@ -6,18 +6,10 @@
 # (Debian: imagemagick); the figure is committed, so only this script needs them.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-walkrad=${WALKRAD:-build/walkrad}
+source docs/tools/box_on_floor.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for case in "fixed --no-adapt" "adaptive --adapt-threshold 0.25"; do
-  set -- $case
-  name=$1
-  shift
-  for wire in "" --wireframe; do
-    "$walkrad" render assets/box-on-floor.json "$@" --out "$work/$name$wire.png" --exposure 1.5 --width 400 \
-      --height 300 --threads 2 --quiet $wire
-  done
-done
+render_box_on_floor "$work" 400 300 "fixed --no-adapt" "adaptive --adapt-threshold 0.25"
 montage -label 'mesh at the patch size' "$work/fixed.png" -label 'adaptive refinement while solving' "$work/adaptive.png" \
         -label '' "$work/fixed--wireframe.png" -label '' "$work/adaptive--wireframe.png" \
         -tile 2x2 -geometry +3+3 -font DejaVu-Sans -pointsize 14 docs/adaptive-shadow.png

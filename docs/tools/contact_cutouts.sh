@@ -6,20 +6,12 @@
 # (Debian: imagemagick); the figure is committed, so only this script needs them.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-walkrad=${WALKRAD:-build/walkrad}
+source docs/tools/box_on_floor.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # Cut out: as the file stands. Not cut: the box moved 2 mm up after converging (the edit path
 # takes the footprint away and corrects the light). Reference: patches of 0.2 m.
-for case in "cut" "uncut --move box:0,0.002,0" "reference --patch-size 0.2"; do
-  set -- $case
-  name=$1
-  shift
-  for wire in "" --wireframe; do
-    "$walkrad" render assets/box-on-floor.json "$@" --out "$work/$name$wire.png" --exposure 1.5 --width 360 \
-      --height 270 --threads 2 --quiet $wire
-  done
-done
+render_box_on_floor "$work" 360 270 "cut" "uncut --move box:0,0.002,0" "reference --patch-size 0.2"
 montage -label 'footprint cut out' "$work/cut.png" -label 'box 2 mm above, not cut' "$work/uncut.png" \
         -label 'reference (0.2 m patches)' "$work/reference.png" \
         -label '' "$work/cut--wireframe.png" -label '' "$work/uncut--wireframe.png" -label '' "$work/reference--wireframe.png" \

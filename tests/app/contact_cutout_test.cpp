@@ -4,11 +4,10 @@
 // With the box's footprint cut out of the floor, the floor's elements end at the box, and the
 // picture comes much closer to a finely meshed solution.
 #include "app/gl/headless_render.h"
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_editor.h"
 #include "engine/scene_loader.h"
+#include "tests/app/solved_display.h"
 
 #include <gtest/gtest.h>
 
@@ -36,12 +35,7 @@ engine::MeshedScene boxScene(double lift, double patch, engine::Scene& out) {
 ImageRgbF solvedImage(double lift, double patch) {
   engine::Scene scene;
   const engine::MeshedScene meshed = boxScene(lift, patch, scene);
-  engine::DisplayMesh mesh = engine::displayMesh(meshed);
-  radiosity::SolverSettings settings;
-  settings.graphicsProcessors = 2;
-  radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
-  engine::solveTo(solver, 0.01, UINT64_MAX);
-  engine::displayRadiance(solver, mesh.radiance);
+  const engine::DisplayMesh mesh = test::solvedDisplayMesh(scene, meshed);
   ViewCamera camera;
   chooseCamera(scene, "", camera);
   return renderHeadless(scene, mesh, camera, 160, 120, 1, false, true).linear;

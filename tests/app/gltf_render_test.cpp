@@ -7,6 +7,7 @@
 #include "engine/lighting.h"
 #include "engine/meshed_scene.h"
 #include "tests/app/pixel_probe.h"
+#include "tests/app/solved_display.h"
 #include "tests/engine/gltf_writer.h"
 
 #include <glm/geometric.hpp>
@@ -86,12 +87,7 @@ INSTANTIATE_TEST_SUITE_P(Models, ExternalRender,
 
 ImageRgb8 renderSolved(const engine::Scene& scene, int width, int height) {
   const engine::MeshedScene meshed = engine::meshScene(scene);
-  engine::DisplayMesh mesh = engine::displayMesh(meshed);
-  radiosity::SolverSettings settings;
-  settings.graphicsProcessors = 2;
-  radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
-  engine::solveTo(solver, 0.01, UINT64_MAX);
-  engine::displayRadiance(solver, mesh.radiance);
+  const engine::DisplayMesh mesh = test::solvedDisplayMesh(scene, meshed);
   ViewCamera camera;
   EXPECT_TRUE(chooseCamera(scene, "", camera));
   return renderHeadless(scene, mesh, camera, width, height, static_cast<float>(engine::autoExposure(mesh)), false, false).color;

@@ -32,6 +32,14 @@ void addSquare(std::vector<SceneTriangle>& out, double x, double z, uint32_t mat
   out.push_back({{a, c, d}, material, object});
 }
 
+// The 1 x 2 panel [0, 1] x [0, 2] on the floor (y = 0), facing up, as two triangles; its long
+// edge runs from (1, 0, 0) to (1, 0, 2).
+void addLongPanel(std::vector<SceneTriangle>& out) {
+  const Vec3 a{0, 0, 0}, b{0, 0, 2}, c{1, 0, 2}, d{1, 0, 0};
+  out.push_back({{a, b, c}, 0, 0});
+  out.push_back({{a, c, d}, 0, 0});
+}
+
 double totalArea(const std::vector<Surface>& surfaces) {
   double sum = 0;
   for (const Surface& s : surfaces) sum += s.area;
@@ -87,9 +95,7 @@ TEST(TriangleMerge, AFloorAroundAGapBecomesAPolygonWithAHole) {
 // T-junction (no shared vertex); it is split and the three become one surface.
 TEST(TriangleMerge, TJunctionsAreResolved) {
   std::vector<SceneTriangle> t;
-  const Vec3 a{0, 0, 0}, b{0, 0, 2}, c{1, 0, 2}, d{1, 0, 0};
-  t.push_back({{a, b, c}, 0, 0});
-  t.push_back({{a, c, d}, 0, 0});
+  addLongPanel(t);
   addSquare(t, 1, 0);
   addSquare(t, 1, 1);
   TriangleMergeCounts counts;
@@ -104,9 +110,8 @@ TEST(TriangleMerge, TJunctionsAreResolved) {
 // A junction vertex off the edge by less than the tolerance (a modeller's rounding) still joins.
 TEST(TriangleMerge, TJunctionsWithinTheToleranceJoin) {
   std::vector<SceneTriangle> t;
-  const Vec3 a{0, 0, 0}, b{0, 0, 2}, c{1, 0, 2}, d{1, 0, 0};
-  t.push_back({{a, b, c}, 0, 0});
-  t.push_back({{a, c, d}, 0, 0});
+  addLongPanel(t);
+  const Vec3 c{1, 0, 2}, d{1, 0, 0};  // the panel's long edge
   const Vec3 m{1 + 1e-8, 0, 1}, e{2, 0, 0}, f{2, 0, 1}, g{2, 0, 2};
   t.push_back({{d, m, f}, 0, 0});
   t.push_back({{d, f, e}, 0, 0});

@@ -10,35 +10,9 @@
 namespace radiosity {
 namespace {
 
-// A closed unit room lit by a panel under its ceiling, with a horizontal board standing in the
-// light at `height`, offset by `dx` along x.
-std::vector<Surface> roomWithBoard(double dx, double height) {
-  std::vector<Surface> room = test::closedBox(1, 0.125, glm::dvec3(0.6), glm::dvec3(0));
-  room.push_back(test::rectangle({0.4, 0.4, 0.999}, {0, 0.2, 0}, {0.2, 0, 0}, 0.1, glm::dvec3(0.5), {10, 10, 10}));
-  // The board faces up (its top is lit) and down (its underside casts the shadow).
-  room.push_back(test::rectangle({0.3 + dx, 0.3, height}, {0.4, 0, 0}, {0, 0.4, 0}, 0.1, glm::dvec3(0.6)));
-  room.push_back(test::rectangle({0.3 + dx, 0.3, height}, {0, 0.4, 0}, {0.4, 0, 0}, 0.1, glm::dvec3(0.6)));
-  return room;
-}
-
-// Mean absolute difference of element radiance over the mean, all surfaces.
-double difference(const Solver& a, const Solver& b) {
-  double diff = 0, level = 0;
-  for (uint32_t s = 0; s < a.surfaceCount(); ++s) {
-    const auto ra = a.elementRadiance(s), rb = b.elementRadiance(s);
-    for (size_t e = 0; e < ra.size(); ++e)
-      for (int c = 0; c < 3; ++c) diff += std::abs(ra[e][c] - rb[e][c]), level += std::abs(rb[e][c]);
-  }
-  return diff / level;
-}
-
-double ledgerResidual(const Solver& solver) {
-  const Stats& s = solver.stats();
-  const auto sum = [](const glm::dvec3& v) { return v.x + v.y + v.z; };
-  const double emitted = sum(s.emittedPower);
-  return std::abs(emitted - sum(s.absorbedPower) - sum(s.backPower) - sum(s.escapedPower) - sum(s.removedPower) -
-                  sum(solver.unshotPower())) / emitted;
-}
+using test::ledgerResidual;
+using test::meanDifference;
+using test::roomWithBoard;
 
 TEST(RadiosityEdit, AMovedBoardGivesWhatAFreshSolveGives) {
   Solver solver(roomWithBoard(0, 0.4));
@@ -54,7 +28,7 @@ TEST(RadiosityEdit, AMovedBoardGivesWhatAFreshSolveGives) {
 
   Solver fresh(roomWithBoard(0.25, 0.4));
   fresh.solve(1e-3);
-  const double error = difference(solver, fresh);
+  const double error = meanDifference(solver, fresh);
   std::printf("moved board: %llu corrections and %llu shots after the edit (a fresh solve: %llu shots); "
               "difference %.3f%%\n",
               static_cast<unsigned long long>(solver.stats().corrections),
@@ -71,10 +45,10 @@ TEST(RadiosityEdit, MovingAndMovingBackRestoresTheSolution) {
   unmoved.solve(1e-3);
   solver.edit(roomWithBoard(0.3, 0.2));
   solver.solve(1e-3);
-  EXPECT_GT(difference(solver, unmoved), 0.02);
+  EXPECT_GT(meanDifference(solver, unmoved), 0.02);
   solver.edit(roomWithBoard(0, 0.4));
   solver.solve(1e-3);
-  EXPECT_LT(difference(solver, unmoved), 0.005);
+  EXPECT_LT(meanDifference(solver, unmoved), 0.005);
   EXPECT_LT(ledgerResidual(solver), 1e-12);
 }
 
@@ -91,7 +65,7 @@ TEST(RadiosityEdit, ARemeshedSurfaceGathersItsLight) {
   solver.solve(1e-3);
   Solver fresh(finer);
   fresh.solve(1e-3);
-  EXPECT_LT(difference(solver, fresh), 0.01);
+  EXPECT_LT(meanDifference(solver, fresh), 0.01);
   EXPECT_LT(ledgerResidual(solver), 1e-12);
 }
 

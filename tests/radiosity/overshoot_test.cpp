@@ -21,16 +21,11 @@ SolverSettings overshooting() {
   return settings;
 }
 
-double channelSum(const glm::dvec3& v) { return v.x + v.y + v.z; }
-
-// emitted = absorbed + back + escaped + removed + unshot, the unshot term signed.
-double ledgerResidual(const Solver& solver) {
-  const Stats& s = solver.stats();
-  const double emitted = channelSum(s.emittedPower);
-  return std::abs(emitted - channelSum(s.absorbedPower) - channelSum(s.backPower) - channelSum(s.escapedPower) -
-                  channelSum(s.removedPower) - channelSum(solver.unshotPower())) /
-         emitted;
-}
+using test::channelSum;
+using test::ledgerResidual;
+using test::meanDifference;
+using test::quad;
+using test::roomWithBoard;
 
 // The largest relative difference of element radiance, any channel, any element.
 double worstDifference(const Solver& a, const Solver& b) {
@@ -42,17 +37,6 @@ double worstDifference(const Solver& a, const Solver& b) {
         if (rb[e][c] > 0) worst = std::max(worst, std::abs(ra[e][c] / rb[e][c] - 1));
   }
   return worst;
-}
-
-// Mean absolute difference of element radiance over the mean, all surfaces.
-double meanDifference(const Solver& a, const Solver& b) {
-  double diff = 0, level = 0;
-  for (uint32_t s = 0; s < a.surfaceCount(); ++s) {
-    const auto ra = a.elementRadiance(s), rb = b.elementRadiance(s);
-    for (size_t e = 0; e < ra.size(); ++e)
-      for (int c = 0; c < 3; ++c) diff += std::abs(ra[e][c] - rb[e][c]), level += std::abs(rb[e][c]);
-  }
-  return diff / level;
 }
 
 // The Cornell box with the engine's shooting patches, solved far with and without: the same
@@ -95,17 +79,6 @@ TEST(RadiosityOvershoot, LedgersStayExactWithNegativeUnshotLight) {
   EXPECT_LT(solver.stats().escapedPower.x, 1e-9 * solver.stats().emittedPower.x);
 }
 
-// One quad element.
-Surface quad(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, glm::dvec3 reflectance, glm::dvec3 emission = glm::dvec3(0)) {
-  Surface s;
-  s.vertices = {origin, origin + u, origin + u + v, origin + v};
-  s.elements = {{0, 1, 2, 3}};
-  s.normal = glm::normalize(glm::cross(u, v));
-  s.reflectance = reflectance;
-  s.emission = emission;
-  return s;
-}
-
 // A big floor right under a tiny lamp: from the floor's centre the lamp looks 45 times larger
 // than it is from the floor's average point, so the floor's overshoot is more than the lamp will
 // ever send it and leaves the floor the largest (negative) unshot power. The floor must then
@@ -140,19 +113,12 @@ TEST(RadiosityOvershoot, FurnaceWithShootingPatches) {
 
 // A board moved in a lit room: the corrected light is what a fresh solve gives, both overshooting.
 TEST(RadiosityOvershoot, AnEditIsCorrectedAsAFreshSolve) {
-  const auto room = [](double dx) {
-    std::vector<Surface> r = test::closedBox(1, 0.125, glm::dvec3(0.6), glm::dvec3(0));
-    r.push_back(test::rectangle({0.4, 0.4, 0.999}, {0, 0.2, 0}, {0.2, 0, 0}, 0.1, glm::dvec3(0.5), {10, 10, 10}));
-    r.push_back(test::rectangle({0.3 + dx, 0.3, 0.4}, {0.4, 0, 0}, {0, 0.4, 0}, 0.1, glm::dvec3(0.6)));
-    r.push_back(test::rectangle({0.3 + dx, 0.3, 0.4}, {0, 0.4, 0}, {0.4, 0, 0}, 0.1, glm::dvec3(0.6)));
-    return r;
-  };
-  Solver solver(room(0), overshooting());
+  Solver solver(roomWithBoard(0, 0.4), overshooting());
   solver.solve(1e-4);
-  solver.edit(room(0.25));
+  solver.edit(roomWithBoard(0.25, 0.4));
   solver.solve(1e-4);
   EXPECT_LT(ledgerResidual(solver), 1e-12);
-  Solver fresh(room(0.25), overshooting());
+  Solver fresh(roomWithBoard(0.25, 0.4), overshooting());
   fresh.solve(1e-4);
   const double worst = worstDifference(solver, fresh);
   std::printf("overshooting, moved board: worst element difference from a fresh solve %.3f%%\n", 100 * worst);

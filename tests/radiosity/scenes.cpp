@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <cmath>
+
 namespace radiosity::test {
 
 Surface rectangle(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, double patchSize, glm::dvec3 reflectance,
@@ -14,6 +16,16 @@ Surface rectangle(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, double patchSiz
   Surface s;
   for (const mesher::Vec2& p : mesh.vertices) s.vertices.push_back(origin + u * (p.x / lu) + v * (p.y / lv));
   s.elements = mesh.elements;
+  s.normal = glm::normalize(glm::cross(u, v));
+  s.reflectance = reflectance;
+  s.emission = emission;
+  return s;
+}
+
+Surface quad(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, glm::dvec3 reflectance, glm::dvec3 emission) {
+  Surface s;
+  s.vertices = {origin, origin + u, origin + u + v, origin + v};
+  s.elements = {{0, 1, 2, 3}};
   s.normal = glm::normalize(glm::cross(u, v));
   s.reflectance = reflectance;
   s.emission = emission;
@@ -30,6 +42,15 @@ std::vector<Surface> closedBox(double size, double patchSize, glm::dvec3 reflect
           rectangle(x, z, y, patchSize, reflectance, emission)}; // x = size, facing -x
 }
 
+std::vector<Surface> roomWithBoard(double dx, double height) {
+  std::vector<Surface> room = closedBox(1, 0.125, glm::dvec3(0.6), glm::dvec3(0));
+  room.push_back(rectangle({0.4, 0.4, 0.999}, {0, 0.2, 0}, {0.2, 0, 0}, 0.1, glm::dvec3(0.5), {10, 10, 10}));
+  // The board faces up (its top is lit) and down (its underside casts the shadow).
+  room.push_back(rectangle({0.3 + dx, 0.3, height}, {0.4, 0, 0}, {0, 0.4, 0}, 0.1, glm::dvec3(0.6)));
+  room.push_back(rectangle({0.3 + dx, 0.3, height}, {0, 0.4, 0}, {0.4, 0, 0}, 0.1, glm::dvec3(0.6)));
+  return room;
+}
+
 double area(const Surface& s, uint32_t e) {
   const auto& c = s.elements[e];
   double a = 0.5 * glm::length(glm::cross(s.vertices[c[1]] - s.vertices[c[0]], s.vertices[c[2]] - s.vertices[c[0]]));
@@ -42,6 +63,26 @@ glm::dvec3 areaTimesRadiance(const Solver& solver, const Surface& surface, uint3
   glm::dvec3 sum{0};
   for (uint32_t e = 0; e < surface.elements.size(); ++e) sum += area(surface, e) * radiance[e];
   return sum;
+}
+
+double channelSum(const glm::dvec3& v) { return v.x + v.y + v.z; }
+
+double ledgerResidual(const Solver& solver) {
+  const Stats& s = solver.stats();
+  const double emitted = channelSum(s.emittedPower);
+  return std::abs(emitted - channelSum(s.absorbedPower) - channelSum(s.backPower) - channelSum(s.escapedPower) -
+                  channelSum(s.removedPower) - channelSum(solver.unshotPower())) /
+         emitted;
+}
+
+double meanDifference(const Solver& a, const Solver& b) {
+  double diff = 0, level = 0;
+  for (uint32_t s = 0; s < a.surfaceCount(); ++s) {
+    const auto ra = a.elementRadiance(s), rb = b.elementRadiance(s);
+    for (size_t e = 0; e < ra.size(); ++e)
+      for (int c = 0; c < 3; ++c) diff += std::abs(ra[e][c] - rb[e][c]), level += std::abs(rb[e][c]);
+  }
+  return diff / level;
 }
 
 std::vector<Surface> cornellBox() {

@@ -1,5 +1,6 @@
-// Scenes for the radiosity tests: rectangles meshed by the quadtree mesher, a closed box, and the
-// shipped Cornell box meshed by the engine.
+// Scenes for the radiosity tests: rectangles meshed by the quadtree mesher, single quads, a closed
+// box, a lit room with a board, and the shipped Cornell box meshed by the engine; and the measures
+// the tests compare solutions by.
 #pragma once
 
 #include "radiosity/radiosity.h"
@@ -15,8 +16,16 @@ namespace radiosity::test {
 Surface rectangle(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, double patchSize, glm::dvec3 reflectance,
                   glm::dvec3 emission = glm::dvec3(0));
 
+// One quad element, origin, origin + u, origin + u + v, origin + v, for scenes at scales the
+// mesher has no business with; its front is the side u x v points to.
+Surface quad(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, glm::dvec3 reflectance, glm::dvec3 emission = glm::dvec3(0));
+
 // The six inner faces of the box [0, size]^3, one material.
 std::vector<Surface> closedBox(double size, double patchSize, glm::dvec3 reflectance, glm::dvec3 emission);
+
+// A closed unit room lit by a panel under its ceiling, with a horizontal board standing in the
+// light at `height`, offset by `dx` along x.
+std::vector<Surface> roomWithBoard(double dx, double height);
 
 // Sum over a surface's elements of area x radiance: its reflected power over pi.
 glm::dvec3 areaTimesRadiance(const Solver& solver, const Surface& surface, uint32_t index);
@@ -25,5 +34,14 @@ glm::dvec3 areaTimesRadiance(const Solver& solver, const Surface& surface, uint3
 std::vector<Surface> cornellBox();
 
 double area(const Surface& surface, uint32_t element);
+
+double channelSum(const glm::dvec3& v);
+
+// |emitted - absorbed - back - escaped - removed - unshot| / emitted, all channels summed and the
+// unshot term signed: zero when the solver's ledgers close.
+double ledgerResidual(const Solver& solver);
+
+// Mean absolute difference of element radiance over the mean, all surfaces (`b` the reference).
+double meanDifference(const Solver& a, const Solver& b);
 
 }  // namespace radiosity::test

@@ -16,20 +16,10 @@ namespace {
 
 using test::area;
 using test::closedBox;
+using test::quad;
 using test::rectangle;
 
 constexpr double kPi = std::numbers::pi;
-
-// One quad element, for scenes at scales the mesher has no business with.
-Surface quad(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, glm::dvec3 reflectance, glm::dvec3 emission = glm::dvec3(0)) {
-  Surface s;
-  s.vertices = {origin, origin + u, origin + u + v, origin + v};
-  s.elements = {{0, 1, 2, 3}};
-  s.normal = glm::normalize(glm::cross(u, v));
-  s.reflectance = reflectance;
-  s.emission = emission;
-  return s;
-}
 
 TEST(RadiositySolver, ShootsLargestUnshotPowerFirst) {
   // A small bright lamp (power pi x 10 x 0.01) and a large dim one (pi x 1 x 1) facing a floor.
