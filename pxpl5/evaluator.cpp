@@ -101,19 +101,19 @@ using Mask = int32_t __attribute__((vector_size(kLanes * sizeof(int32_t))));  //
 
 // Every lane s (not 0 + s, which would make a negative zero positive).
 template <class V, class T>
-V splat(T s) {
+[[gnu::always_inline]] inline V splat(T s) {
   V v;
   for (int l = 0; l < kLanes; ++l) v[l] = s;
   return v;
 }
 template <class V, class T>
-V loadRun(const T* at) {
+[[gnu::always_inline]] inline V loadRun(const T* at) {
   V v;
   std::memcpy(&v, at, sizeof v);
   return v;
 }
 template <class V, class T>
-void storeRun(T* at, const V& v) {
+[[gnu::always_inline]] inline void storeRun(T* at, const V& v) {
   std::memcpy(at, &v, sizeof v);
 }
 

@@ -111,15 +111,15 @@ struct Lanes3 {
   Lanes x, y, z;
 };
 
-inline Lanes dot(const Lanes3& a, const Lanes3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
-inline Lanes dot(const Lanes3& a, const glm::dvec3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
-inline Lanes3 cross(const Lanes3& a, const Lanes3& b) {
+[[gnu::always_inline]] inline Lanes dot(const Lanes3& a, const Lanes3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+[[gnu::always_inline]] inline Lanes dot(const Lanes3& a, const glm::dvec3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+[[gnu::always_inline]] inline Lanes3 cross(const Lanes3& a, const Lanes3& b) {
   return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
 }
-inline Lanes3 times(const Lanes3& a, Lanes s) { return {a.x * s, a.y * s, a.z * s}; }
-inline Lanes select(LaneMask m, Lanes a, Lanes b) { return m ? a : b; }
+[[gnu::always_inline]] inline Lanes3 times(const Lanes3& a, Lanes s) { return {a.x * s, a.y * s, a.z * s}; }
+[[gnu::always_inline]] inline Lanes select(LaneMask m, Lanes a, Lanes b) { return m ? a : b; }
 // std::sqrt lane by lane: the compiler makes it one vector square root (-fno-math-errno).
-inline Lanes sqrtLanes(Lanes v) {
+[[gnu::always_inline]] inline Lanes sqrtLanes(Lanes v) {
   for (int l = 0; l < kPolygonLanes; ++l) v[l] = std::sqrt(v[l]);
   return v;
 }
@@ -128,7 +128,7 @@ inline Lanes sqrtLanes(Lanes v) {
 struct LaneExpressions {
   FloatLanes a, b, c, t;
 };
-inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
+[[gnu::always_inline]] inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
   return {__builtin_convertvector(n.x * grid.step, FloatLanes), __builtin_convertvector(n.y * grid.step, FloatLanes),
           __builtin_convertvector((n.x + n.y) * grid.first, FloatLanes), __builtin_convertvector(n.z, FloatLanes)};
 }
@@ -149,7 +149,7 @@ inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
 
   // localPolygon: the vertices in the local frame (v[most] is each lane's first vertex again),
   // Newell's normal, the centre, the extent and the plane's offset.
-  const auto localVertex = [&](int k) {
+  const auto localVertex = [&](int k) __attribute__((always_inline)) {
     const glm::vec3* w[kPolygonLanes];
     for (int l = 0; l < kPolygonLanes; ++l)
       w[l] = &soup.vertices[polygons[l].firstVertex + (static_cast<uint32_t>(k) < polygons[l].vertexCount ? static_cast<uint32_t>(k) : 0u)];
@@ -216,7 +216,7 @@ inline LaneExpressions laneExpressions(const DiskGrid& grid, const Lanes3& n) {
   {
     LaneMask unused = culled | below | crossing;
     for (int l = 0; l < kPolygonLanes; ++l) unused[l] |= skipped[l] ? -1 : 0;
-    const auto pixels = [&](Lanes p) { return select(unused, Lanes{}, (p - grid.first) * grid.perStep); };
+    const auto pixels = [&](Lanes p) __attribute__((always_inline)) { return select(unused, Lanes{}, (p - grid.first) * grid.perStep); };
     const Lanes x0 = pixels(xLo) - 0.25, x1 = pixels(xHi) + 0.25, y0 = pixels(yLo) - 0.25, y1 = pixels(yHi) + 0.25;
     for (int l = 0; l < kPolygonLanes; ++l)
       bounds[l] = {static_cast<int>(std::ceil(x0[l])), static_cast<int>(std::ceil(y0[l])), static_cast<int>(std::floor(x1[l])) + 1,
