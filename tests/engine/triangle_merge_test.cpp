@@ -7,7 +7,6 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -196,17 +195,15 @@ TEST(TriangleMerge, DegenerateTrianglesAreSkippedAndCounted) {
 
 // A 300 x 300 grid (180,000 triangles, like a finely triangulated floor) becomes one square in
 // well under the time a pairwise merge would take; twice gives the same result.
-TEST(TriangleMerge, AFineFloorMergesQuicklyAndDeterministically) {
+// Speed is measured by loading the real models (docs/BENCHMARKS.md), not here.
+TEST(TriangleMerge, AFineFloorMergesIntoOneSquareDeterministically) {
   std::vector<SceneTriangle> t;
   for (int x = 0; x < 300; ++x)
     for (int z = 0; z < 300; ++z) addSquare(t, x, z);
-  const auto start = std::chrono::steady_clock::now();
   const auto surfaces = mergeTriangles(sceneOf(1), t, 1e-6);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(surfaces.size(), 1u);
   EXPECT_EQ(surfaces[0].outer.size(), 4u);
   EXPECT_DOUBLE_EQ(surfaces[0].area, 90000);
-  EXPECT_LT(seconds, 5);  // about 0.3 s on the project's machine; generous for a shared box
   const auto again = mergeTriangles(sceneOf(1), t, 1e-6);
   EXPECT_EQ(again[0].outer, surfaces[0].outer);
 }
