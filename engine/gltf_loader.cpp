@@ -458,15 +458,6 @@ std::string firstLine(const std::string& text) {
   return end == std::string::npos ? text : text.substr(0, end);
 }
 
-}  // namespace
-
-bool isGltfPath(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".gltf" || extension == ".glb";
-}
-
-namespace {
 
 // Each triangle a surface of its own, as the file describes it (for walkrad check): degenerate
 // ones included, with no area and the default normal.
@@ -543,8 +534,7 @@ Scene importGltf(std::string_view bytes, const std::string& file, const LoadOpti
 
   // Patch size: the sidecar's, else an eighth of the largest extent (as scene files).
   scene.computeBounds();
-  const Vec3 size = scene.boundsMax - scene.boundsMin;
-  const double extent = std::max({size.x, size.y, size.z});
+  const double extent = sceneExtent(scene);
   scene.patchSize = sidecar.patchSize.value_or(extent / 8);
   if (extent / scene.patchSize > kMaxPatchesPerEdge)
     throw SceneError(Diag::PatchTooSmall, sidecarFile, "patch_size", "model extent " + std::to_string(extent));
@@ -554,6 +544,12 @@ Scene importGltf(std::string_view bytes, const std::string& file, const LoadOpti
 }
 
 }  // namespace
+
+bool isGltfPath(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".gltf" || extension == ".glb";
+}
 
 Scene parseGltf(std::string_view bytes, const std::string& file, const LoadOptions& options) {
   return importGltf(bytes, file, options, GltfStage::Surfaces);

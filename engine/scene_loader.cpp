@@ -283,6 +283,12 @@ void checkPatchSizes(const Scene& scene, const JsonReader& in) {
   }
 }
 
+// A scene file states its own units and needs no sidecar.
+void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
+  if (!options.units.empty()) throw SceneError(Diag::GltfOnly, path, "--units", "a scene file states its own units");
+  if (!options.sidecar.empty()) throw SceneError(Diag::GltfOnly, path, "--sidecar");
+}
+
 }  // namespace
 
 double metersPerUnit(std::string_view units) {
@@ -336,16 +342,6 @@ std::string readInputFile(const std::string& path) {
   if (!file) throw SceneError(Diag::FileUnreadable, path, "", std::strerror(errno));
   return text.str();
 }
-
-namespace {
-
-// A scene file states its own units and needs no sidecar.
-void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
-  if (!options.units.empty()) throw SceneError(Diag::GltfOnly, path, "--units", "a scene file states its own units");
-  if (!options.sidecar.empty()) throw SceneError(Diag::GltfOnly, path, "--sidecar");
-}
-
-}  // namespace
 
 Scene loadScene(const std::string& path, const LoadOptions& options) {
   if (isGltfPath(path)) return loadGltf(path, options);
