@@ -283,12 +283,6 @@ void checkPatchSizes(const Scene& scene, const JsonReader& in) {
   }
 }
 
-// A scene file states its own units and needs no sidecar.
-void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
-  if (!options.units.empty()) throw SceneError(Diag::GltfOnly, path, "--units", "a scene file states its own units");
-  if (!options.sidecar.empty()) throw SceneError(Diag::GltfOnly, path, "--sidecar");
-}
-
 }  // namespace
 
 double metersPerUnit(std::string_view units) {
@@ -353,6 +347,11 @@ Scene loadSceneFaces(const std::string& path, const LoadOptions& options) {
   if (isGltfPath(path)) return loadGltfFaces(path, options);
   refuseGltfOptions(path, options);
   return parseSceneFaces(readInputFile(path), path);
+}
+
+void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
+  if (!options.units.empty()) throw SceneError(Diag::GltfOnly, path, "--units", "a scene file states its own units");
+  if (!options.sidecar.empty()) throw SceneError(Diag::GltfOnly, path, "--sidecar");
 }
 
 double sceneExtent(const Scene& scene) {

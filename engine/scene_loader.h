@@ -32,6 +32,10 @@ Scene loadSceneFaces(const std::string& path, const LoadOptions& options = {});
 Scene parseSceneFaces(std::string_view text, const std::string& file);
 void preprocessSurfaces(Scene& scene);
 
+// Throws GltfOnly when `options` give units or a sidecar for a scene file, which states its own
+// units and needs no sidecar.
+void refuseGltfOptions(const std::string& path, const LoadOptions& options);
+
 // The largest side of the scene's bounding box (Scene::computeBounds), in scene units.
 double sceneExtent(const Scene& scene);
 

@@ -167,8 +167,7 @@ OpenedScene openScene(const std::string& path, const engine::LoadOptions& load, 
   if (engine::isGltfPath(path)) {
     opened.scene = engine::loadScene(path, load);
   } else {
-    if (!load.units.empty() || !load.sidecar.empty())
-      throw engine::SceneError(engine::Diag::GltfOnly, path, load.units.empty() ? "--sidecar" : "--units");
+    engine::refuseGltfOptions(path, load);
     opened.text = engine::readInputFile(path);
     opened.scene = engine::parseScene(opened.text, path);
   }
