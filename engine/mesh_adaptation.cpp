@@ -135,9 +135,10 @@ void MeshAdaptation::edit(const Scene& scene, const MeshedScene& meshed) {
     SurfaceMesh& mesh = meshed_.surfaces[s] = meshed.surfaces[s];
     mesh.polygon = planePolygon(scene.surfaces[s], scene.surfaces[s]);
     mesh.mesh.vertices = planeVertices(scene.surfaces[s], mesh.positions);
+    scene_.surfaces[s] = scene.surfaces[s];
+    input_[s] = radiosityInput(scene_, meshed_, s);
   }
   scene_ = scene;
-  for (size_t s = 0; s < scene.surfaces.size(); ++s) input_[s] = radiosityInput(scene_, meshed_, s);
   // Passes are due again as the light after the edit settles (see adaptIfDue).
   nextPassAt_ = -1;
   convergedPasses_ = 0;
