@@ -1,11 +1,11 @@
 #include "engine/scene_loader.h"
 
 #include "engine/contact_cutouts.h"
-#include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
 #include "engine/gltf_loader.h"
 #include "engine/json_reader.h"
 #include "engine/solid_surfaces.h"
+#include "engine/triangle_merge.h"
 
 #include <glm/common.hpp>
 
@@ -315,7 +315,7 @@ Scene parseSceneFaces(std::string_view text, const std::string& file) {
 
 void preprocessSurfaces(Scene& scene) {
   // Coplanar faces of one material that touch become one surface (3.2).
-  scene.surfaces = mergeCoplanarSurfaces(scene, std::move(scene.surfaces), 1e-9 * sceneExtent(scene));
+  scene.surfaces = mergeFaces(scene, std::move(scene.surfaces), 1e-9 * sceneExtent(scene));
   // Faces resting on other objects' surfaces are cut out of them.
   cutOutContacts(scene.surfaces, contactTolerance(scene));
 }

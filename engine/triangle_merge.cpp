@@ -1,9 +1,10 @@
-// Sections: welding and plane groups | edges: pairing and T-junction splits | tracing rings |
-// a group into surfaces | mergeTriangles.
+// Sections: pieces, welding and plane groups | edges: pairing and T-junction splits | tracing
+// rings | a group into surfaces | the inputs: mergeTriangles, mergeFaces.
 #include "engine/triangle_merge.h"
 
 #include "mesher/polygon.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <compare>
 #include <numbers>
 #include <numeric>
+#include <span>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -23,14 +25,15 @@ namespace {
 using mesher::Vec2;
 constexpr uint32_t kNone = 0xffffffffu;
 constexpr size_t kMaxHoles = 256;  // as in scene files: the display's hole bridging is quadratic
-constexpr int kSplitRounds = 8;    // times a group may shed the triangles at its touching corners
+constexpr int kSplitRounds = 8;    // times a group may shed the pieces at its touching corners
 constexpr double kNormalGrid = 1e4;  // plane groups: unit normals rounded to 1e-4
 constexpr double kOffsetCells = 4;   // plane groups: offsets rounded to this many tolerances
 
-// ---- welding and plane groups ----
+// ---- pieces, welding and plane groups ----
 
 // Corners are welded when their coordinates are equal exactly: exporters repeat a corner once
-// per normal and texture coordinate. (-0.0 + 0.0 is +0.0, so both zeros hash alike.)
+// per normal and texture coordinate, and a scene file's flush faces repeat each other's corners.
+// (-0.0 + 0.0 is +0.0, so both zeros hash alike.)
 struct PointHash {
   size_t operator()(const Vec3& p) const {
     uint64_t h = 1469598103934665603ull;
@@ -46,13 +49,37 @@ struct PlaneKey {
   auto operator<=>(const PlaneKey&) const = default;
 };
 
-struct Triangle {
-  std::array<uint32_t, 3> v;  // welded corners
+// A planar piece to merge: a triangle, or a face with holes.
+struct Piece {
+  uint32_t firstRing;  // into Merger::ringEnd_; its rings (outer, then holes) run to the next piece's
   Vec3 normal;
   double area;
-  uint32_t source;  // index into the input
+  uint32_t material, object;
+  uint32_t source;  // the caller's index
   PlaneKey key;
 };
+
+// One surface a merge makes; its material and object are its first piece's.
+struct Polygon {
+  Ring3 outer;  // empty: a piece on its own as it was given (most are: no copies of their rings)
+  std::vector<Ring3> holes;
+  Vec3 normal;
+  double area = 0;
+};
+
+struct Merged {
+  std::vector<Polygon> polygons;
+  std::vector<uint32_t> sources;     // polygon after polygon, ascending: its pieces' sources
+  std::vector<uint32_t> sourcesEnd;  // per polygon: one past its last in `sources`
+
+  std::span<const uint32_t> sourcesOf(size_t polygon) const {
+    const uint32_t begin = polygon == 0 ? 0 : sourcesEnd[polygon - 1];
+    return {sources.data() + begin, sourcesEnd[polygon] - begin};
+  }
+};
+
+// Whether ring corners that are exactly collinear, and used by no other surface, may go.
+enum class Corners { DropUnsharedCollinear, KeepAll };
 
 // A plane group's 2-D frame, counter-clockwise about its normal; world axes when the normal is
 // one, so coordinates stay exact (as surface_mesh.cpp lays surfaces down).
@@ -78,11 +105,11 @@ Frame frameFor(const Vec3& n) {
 // ---- edges: pairing and T-junction splits ----
 
 struct HalfEdge {
-  uint32_t a, b;  // local vertices, in the triangle's order
-  uint32_t tri;   // local triangle
+  uint32_t a, b;   // local vertices, in the ring's order
+  uint32_t piece;  // local piece
 };
 
-// For each half-edge its twin running the other way (a triangle across it), or kNone. Several
+// For each half-edge its twin running the other way (a piece across it), or kNone. Several
 // half-edges on one segment pair up as far as they go (non-manifold input).
 std::vector<uint32_t> pairEdges(const std::vector<HalfEdge>& edges) {
   auto key = [&](uint32_t i) {
@@ -121,79 +148,98 @@ double clockwiseTurn(Vec2 back, Vec2 out) {
   return angle;
 }
 
-// One plane group after splitting: local vertices, triangles and their half-edges.
+// One plane group after splitting: local vertices, pieces, their rings and half-edges (only the
+// pieces for a piece alone in its plane).
 struct Bucket {
   Vec3 normal;
-  std::vector<uint32_t> global;      // local vertex -> welded vertex
-  std::vector<Vec2> p2;              // local vertex in the group's frame
-  std::vector<uint32_t> tris;        // local triangle -> index into the triangles
-  std::vector<HalfEdge> edges;       // after splitting; a triangle's are contiguous, in order
-  std::vector<uint32_t> firstEdge;   // per local triangle, and one past the last
-  std::vector<uint32_t> twin;        // per half-edge
+  std::vector<uint32_t> global;         // local vertex -> welded vertex
+  std::vector<Vec2> p2;                 // local vertex in the group's frame
+  std::vector<uint32_t> pieces;         // local piece -> index into the pieces
+  std::vector<uint32_t> firstRing;      // per local piece, and one past the last: its local rings
+  std::vector<HalfEdge> edges;          // after splitting; a ring's are contiguous, in order
+  std::vector<uint32_t> ringFirstEdge;  // per local ring, and one past the last
+  std::vector<uint32_t> twin;           // per half-edge
+
+  uint32_t firstEdge(uint32_t piece) const { return ringFirstEdge[firstRing[piece]]; }
 };
 
 class Merger {
  public:
-  Merger(const Scene& scene, const std::vector<SceneTriangle>& input, double tolerance, TriangleMergeCounts& counts)
-      : scene_(scene), input_(input), tolerance_(tolerance), counts_(counts) {}
+  Merger(const Scene& scene, double tolerance, Corners corners, TriangleMergeCounts& counts, size_t expectedCorners)
+      : scene_(scene), tolerance_(tolerance), cornerRule_(corners), counts_(counts) {
+    index_.reserve(expectedCorners);
+    ringCorners_.reserve(expectedCorners);
+  }
 
-  std::vector<Surface> run() {
-    weld();
+  // A piece is given ring by ring (its outer ring counter-clockwise seen from the front, then its
+  // holes, clockwise), then closed by addPiece.
+  void addRing(std::span<const Vec3> ring) {
+    for (const Vec3& p : ring) {
+      const auto [at, added] = index_.try_emplace(p, static_cast<uint32_t>(points_.size()));
+      if (added) points_.push_back(p);
+      ringCorners_.push_back(at->second);
+    }
+    ringEnd_.push_back(static_cast<uint32_t>(ringCorners_.size()));
+  }
+
+  // Closes the piece whose rings were just added; `source` is the caller's index for it. Its
+  // plane's offset is taken at the mean of its outer corners.
+  void addPiece(const Vec3& normal, double area, uint32_t material, uint32_t object, uint32_t source) {
+    Piece p{nextRing_, normal, area, material, object, source, {}};
+    nextRing_ = static_cast<uint32_t>(ringEnd_.size());
+    const uint32_t begin = ringBegin(p.firstRing), end = ringEnd_[p.firstRing];
+    Vec3 sum{0};
+    for (uint32_t k = begin; k < end; ++k) sum += points_[ringCorners_[k]];
+    const double offset = glm::dot(normal, sum / static_cast<double>(end - begin));
+    auto grid = [](double c) { return static_cast<int64_t>(std::llround(c * kNormalGrid)); };
+    p.key = {scene_.objects[object].movable ? static_cast<int64_t>(object) : -1, material, grid(normal.x), grid(normal.y),
+             grid(normal.z), static_cast<int64_t>(std::llround(offset / (kOffsetCells * tolerance_)))};
+    pieces_.push_back(p);
+  }
+
+  Merged run() {
     std::vector<Bucket> buckets = groupByPlane();
-    for (const Bucket& b : buckets)
-      for (const HalfEdge& e : b.edges) ++uses_[b.global[e.a]];
-    for (const Bucket& b : buckets) emitBucket(b);
-    counts_.surfaces = out_.size();
+    if (cornerRule_ == Corners::DropUnsharedCollinear) {
+      uses_.assign(points_.size(), 0);
+      for (const Bucket& b : buckets) {
+        for (const HalfEdge& e : b.edges) ++uses_[b.global[e.a]];
+        if (b.pieces.size() == 1)
+          for (uint32_t k = ringBegin(pieces_[b.pieces[0]].firstRing); k < ringBegin(ringsEnd(b.pieces[0])); ++k)
+            ++uses_[ringCorners_[k]];  // its corners, as its unsplit half-edges would count them
+      }
+    }
+    out_.polygons.reserve(buckets.size());
+    for (const Bucket& b : buckets) {
+      if (b.pieces.size() == 1) emitGiven(b.pieces[0]);
+      else emitBucket(b);
+    }
+    counts_.surfaces = out_.polygons.size();
     return std::move(out_);
   }
 
  private:
-  void weld() {
-    std::unordered_map<Vec3, uint32_t, PointHash> index;
-    index.reserve(input_.size());
-    auto id = [&](const Vec3& p) {
-      const auto [at, added] = index.try_emplace(p, static_cast<uint32_t>(points_.size()));
-      if (added) points_.push_back(p);
-      return at->second;
-    };
-    triangles_.reserve(input_.size());
-    for (uint32_t i = 0; i < input_.size(); ++i) {
-      const SceneTriangle& in = input_[i];
-      Triangle t;
-      for (int k = 0; k < 3; ++k) t.v[k] = id(in.corners[k]);
-      const Vec3 cross = glm::cross(in.corners[1] - in.corners[0], in.corners[2] - in.corners[0]);
-      const double twiceArea = glm::length(cross);
-      const double longest = std::max({glm::length(in.corners[1] - in.corners[0]), glm::length(in.corners[2] - in.corners[1]),
-                                       glm::length(in.corners[0] - in.corners[2])});
-      // No area: its height above the longest edge is within the tolerance.
-      if (t.v[0] == t.v[1] || t.v[1] == t.v[2] || t.v[2] == t.v[0] || !(twiceArea > tolerance_ * longest)) {
-        ++counts_.degenerate;
-        continue;
-      }
-      t.normal = cross / twiceArea;
-      t.area = twiceArea / 2;
-      t.source = i;
-      const double offset = glm::dot(t.normal, (in.corners[0] + in.corners[1] + in.corners[2]) / 3.0);
-      auto grid = [](double c) { return static_cast<int64_t>(std::llround(c * kNormalGrid)); };
-      t.key = {scene_.objects[in.object].movable ? static_cast<int64_t>(in.object) : -1, in.material, grid(t.normal.x),
-               grid(t.normal.y), grid(t.normal.z), static_cast<int64_t>(std::llround(offset / (kOffsetCells * tolerance_)))};
-      triangles_.push_back(t);
-    }
-    uses_.assign(points_.size(), 0);
+  // Ring r's corners are ringCorners_[ringBegin(r), ringEnd_[r]); piece p's rings are
+  // [pieces_[p].firstRing, ringsEnd(p)).
+  uint32_t ringBegin(uint32_t ring) const { return ring == 0 ? 0 : ringEnd_[ring - 1]; }
+  uint32_t ringsEnd(uint32_t piece) const {
+    return piece + 1 < pieces_.size() ? pieces_[piece + 1].firstRing : static_cast<uint32_t>(ringEnd_.size());
   }
 
   std::vector<Bucket> groupByPlane() {
-    std::vector<uint32_t> order(triangles_.size());
+    std::vector<uint32_t> order(pieces_.size());
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](uint32_t i, uint32_t j) {
-      return std::tie(triangles_[i].key, i) < std::tie(triangles_[j].key, j);
+      return std::tie(pieces_[i].key, i) < std::tie(pieces_[j].key, j);
     });
     std::vector<Bucket> buckets;
     std::vector<uint32_t> localOf(points_.size(), kNone);
     for (size_t i = 0; i < order.size();) {
       size_t end = i;
-      while (end < order.size() && triangles_[order[end]].key == triangles_[order[i]].key) ++end;
-      buckets.push_back(makeBucket(std::vector<uint32_t>(order.begin() + i, order.begin() + end), localOf));
+      while (end < order.size() && pieces_[order[end]].key == pieces_[order[i]].key) ++end;
+      Bucket& b = buckets.emplace_back();
+      b.pieces.assign(order.begin() + i, order.begin() + end);
+      // A piece alone in its plane has nothing to merge with or to split its edges at.
+      if (end - i > 1) fillBucket(b, pieces_[order[i]].key, localOf);
       i = end;
     }
     return buckets;
@@ -201,90 +247,108 @@ class Merger {
 
   // Lays the group into its plane, splits its unmatched edges at the group's vertices lying on
   // them (T-junctions), and pairs the pieces.
-  Bucket makeBucket(std::vector<uint32_t> tris, std::vector<uint32_t>& localOf) {
-    Bucket b;
-    const PlaneKey& key = triangles_[tris.front()].key;
+  void fillBucket(Bucket& b, const PlaneKey& key, std::vector<uint32_t>& localOf) {
     const int64_t g = static_cast<int64_t>(kNormalGrid);
     const bool axis = std::abs(key.nx) + std::abs(key.ny) + std::abs(key.nz) == g &&
                       (std::abs(key.nx) == g || std::abs(key.ny) == g || std::abs(key.nz) == g);
     Vec3 sum{0};
-    for (uint32_t t : tris) sum += triangles_[t].normal * triangles_[t].area;
+    for (uint32_t p : b.pieces) sum += pieces_[p].normal * pieces_[p].area;
     b.normal = axis ? Vec3(key.nx / g, key.ny / g, key.nz / g) : glm::normalize(sum);
     const Frame frame = frameFor(b.normal);
-    b.tris = std::move(tris);
 
-    // Local vertices and whole edges.
+    // Local vertices and whole edges, ring after ring.
     std::vector<HalfEdge> whole;
-    whole.reserve(3 * b.tris.size());
-    for (uint32_t t = 0; t < b.tris.size(); ++t) {
-      std::array<uint32_t, 3> local;
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t v = triangles_[b.tris[t]].v[k];
-        if (localOf[v] == kNone) {
-          localOf[v] = static_cast<uint32_t>(b.global.size());
-          b.global.push_back(v);
-          b.p2.push_back(frame.project(points_[v]));
+    std::vector<uint32_t> wholeRingStart;  // per local ring, and one past the last
+    whole.reserve(3 * b.pieces.size());
+    b.firstRing.reserve(b.pieces.size() + 1);
+    for (uint32_t t = 0; t < b.pieces.size(); ++t) {
+      const uint32_t piece = b.pieces[t];
+      b.firstRing.push_back(static_cast<uint32_t>(wholeRingStart.size()));
+      for (uint32_t r = pieces_[piece].firstRing; r < ringsEnd(piece); ++r) {
+        wholeRingStart.push_back(static_cast<uint32_t>(whole.size()));
+        const uint32_t begin = ringBegin(r), end = ringEnd_[r];
+        for (uint32_t k = begin; k < end; ++k) {
+          const uint32_t v = ringCorners_[k];
+          if (localOf[v] == kNone) {
+            localOf[v] = static_cast<uint32_t>(b.global.size());
+            b.global.push_back(v);
+            b.p2.push_back(frame.project(points_[v]));
+          }
         }
-        local[k] = localOf[v];
+        for (uint32_t k = begin; k < end; ++k)
+          whole.push_back({localOf[ringCorners_[k]], localOf[ringCorners_[k + 1 < end ? k + 1 : begin]], t});
       }
-      for (int k = 0; k < 3; ++k) whole.push_back({local[k], local[(k + 1) % 3], t});
     }
+    b.firstRing.push_back(static_cast<uint32_t>(wholeRingStart.size()));
+    wholeRingStart.push_back(static_cast<uint32_t>(whole.size()));
     for (uint32_t v : b.global) localOf[v] = kNone;
     const std::vector<uint32_t> wholeTwin = pairEdges(whole);
 
     // Only unmatched edges can hold a T-junction, and only at an end of another unmatched edge:
-    // those ends, sorted along u, are searched for each such edge.
-    std::vector<uint32_t> ends;
+    // those ends, sorted along u and along v, are searched for each such edge along the axis it
+    // spans least (walls and floors: only the ends in line with it).
+    std::array<std::vector<uint32_t>, 2> ends;
     for (size_t e = 0; e < whole.size(); ++e)
-      if (wholeTwin[e] == kNone) ends.push_back(whole[e].a), ends.push_back(whole[e].b);
-    std::sort(ends.begin(), ends.end(), [&](uint32_t i, uint32_t j) { return std::tie(b.p2[i].x, i) < std::tie(b.p2[j].x, j); });
-    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+      if (wholeTwin[e] == kNone) ends[0].push_back(whole[e].a), ends[0].push_back(whole[e].b);
+    std::sort(ends[0].begin(), ends[0].end());
+    ends[0].erase(std::unique(ends[0].begin(), ends[0].end()), ends[0].end());
+    ends[1] = ends[0];
+    for (int k = 0; k < 2; ++k)
+      std::sort(ends[k].begin(), ends[k].end(), [&](uint32_t i, uint32_t j) { return std::tie(b.p2[i][k], i) < std::tie(b.p2[j][k], j); });
+    std::vector<uint32_t> ownedBy(b.global.size(), kNone);  // per local vertex: the last piece using it
     std::vector<std::pair<double, uint32_t>> cuts;
     b.edges.reserve(whole.size());
-    b.firstEdge.reserve(b.tris.size() + 1);
-    for (size_t e = 0; e < whole.size(); ++e) {
-      if (e % 3 == 0) b.firstEdge.push_back(static_cast<uint32_t>(b.edges.size()));
-      const HalfEdge& edge = whole[e];
-      cuts.clear();
-      if (wholeTwin[e] == kNone) {
-        const Vec2 a = b.p2[edge.a], d = b.p2[edge.b] - a;
-        const double length = glm::length(d);
-        const double lo = std::min(a.x, a.x + d.x) - tolerance_, hi = std::max(a.x, a.x + d.x) + tolerance_;
-        auto first = std::lower_bound(ends.begin(), ends.end(), lo, [&](uint32_t i, double x) { return b.p2[i].x < x; });
-        const HalfEdge* corners = &whole[e - e % 3];
-        for (auto it = first; it != ends.end() && b.p2[*it].x <= hi; ++it) {
-          // A sliver's own third corner may lie within the tolerance of its edge: not a junction.
-          if (*it == corners[0].a || *it == corners[1].a || *it == corners[2].a) continue;
-          const Vec2 p = b.p2[*it] - a;
-          const double along = glm::dot(p, d) / length;
-          if (along <= tolerance_ || along >= length - tolerance_) continue;
-          if (std::abs(p.x * d.y - p.y * d.x) / length > tolerance_) continue;
-          cuts.push_back({along, *it});
+    b.ringFirstEdge.reserve(wholeRingStart.size());
+    for (uint32_t t = 0; t < b.pieces.size(); ++t) {
+      const uint32_t first = wholeRingStart[b.firstRing[t]], last = wholeRingStart[b.firstRing[t + 1]];
+      for (uint32_t e = first; e < last; ++e) ownedBy[whole[e].a] = t;
+      for (uint32_t r = b.firstRing[t]; r < b.firstRing[t + 1]; ++r) {
+        b.ringFirstEdge.push_back(static_cast<uint32_t>(b.edges.size()));
+        for (uint32_t e = wholeRingStart[r]; e < wholeRingStart[r + 1]; ++e) {
+          const HalfEdge& edge = whole[e];
+          cuts.clear();
+          if (wholeTwin[e] == kNone) {
+            const Vec2 a = b.p2[edge.a], d = b.p2[edge.b] - a;
+            const double length = glm::length(d);
+            const int k = std::abs(d.x) <= std::abs(d.y) ? 0 : 1;
+            const std::vector<uint32_t>& line = ends[k];
+            const Vec2 lo = glm::min(a, a + d) - tolerance_, hi = glm::max(a, a + d) + tolerance_;
+            auto from = std::lower_bound(line.begin(), line.end(), lo[k], [&](uint32_t i, double c) { return b.p2[i][k] < c; });
+            for (auto it = from; it != line.end() && b.p2[*it][k] <= hi[k]; ++it) {
+              const Vec2 q = b.p2[*it];
+              // A sliver's own corner may lie within the tolerance of its edge: not a junction.
+              if (q[1 - k] < lo[1 - k] || q[1 - k] > hi[1 - k] || ownedBy[*it] == t) continue;
+              const Vec2 p = q - a;
+              const double along = glm::dot(p, d) / length;
+              if (along <= tolerance_ || along >= length - tolerance_) continue;
+              if (std::abs(p.x * d.y - p.y * d.x) / length > tolerance_) continue;
+              cuts.push_back({along, *it});
+            }
+            std::sort(cuts.begin(), cuts.end());
+            counts_.tJunctions += cuts.size();
+          }
+          uint32_t at = edge.a;
+          for (const auto& [along, v] : cuts) {
+            b.edges.push_back({at, v, t});
+            at = v;
+          }
+          b.edges.push_back({at, edge.b, t});
         }
-        std::sort(cuts.begin(), cuts.end());
-        counts_.tJunctions += cuts.size();
       }
-      uint32_t from = edge.a;
-      for (const auto& [along, v] : cuts) {
-        b.edges.push_back({from, v, edge.tri});
-        from = v;
-      }
-      b.edges.push_back({from, edge.b, edge.tri});
     }
-    b.firstEdge.push_back(static_cast<uint32_t>(b.edges.size()));
+    b.ringFirstEdge.push_back(static_cast<uint32_t>(b.edges.size()));
     b.twin = pairEdges(b.edges);
-    return b;
   }
 
   // ---- a group into surfaces ----
 
   void emitBucket(const Bucket& b) {
-    // Triangles joined across paired half-edges (union-find by local triangle).
-    std::vector<uint32_t> root(b.tris.size());
+    // Pieces joined across paired half-edges (union-find by local piece).
+    std::vector<uint32_t> root(b.pieces.size());
     std::iota(root.begin(), root.end(), 0u);
     unite(b, root, [](uint32_t) { return true; });
     std::vector<std::vector<uint32_t>> groups = groupsOf(root, [](uint32_t) { return true; });
-    member_.assign(b.tris.size(), kNone);
+    member_.assign(b.pieces.size(), kNone);
     for (std::vector<uint32_t>& group : groups) emitGroup(b, std::move(group), 0);
   }
 
@@ -296,8 +360,8 @@ class Merger {
     };
     for (size_t e = 0; e < b.edges.size(); ++e) {
       const uint32_t t = b.twin[e];
-      if (t == kNone || !keep(b.edges[e].tri) || !keep(b.edges[t].tri)) continue;
-      root[find(b.edges[e].tri)] = find(b.edges[t].tri);
+      if (t == kNone || !keep(b.edges[e].piece) || !keep(b.edges[t].piece)) continue;
+      root[find(b.edges[e].piece)] = find(b.edges[t].piece);
     }
     for (uint32_t i = 0; i < root.size(); ++i) root[i] = find(i);
   }
@@ -321,8 +385,8 @@ class Merger {
     for (uint32_t t : group) member_[t] = stamp;
     std::vector<std::vector<uint32_t>> rings = traceRings(b, group, stamp);
 
-    // Corners where the boundary touches itself: the triangles there go on their own, the rest
-    // is tried again (it may fall apart into several groups).
+    // Corners where the boundary touches itself: the pieces there go on their own, the rest is
+    // tried again (it may fall apart into several groups).
     std::unordered_map<uint32_t, int> seen;
     std::vector<uint32_t> touching;
     for (const auto& ring : rings)
@@ -334,11 +398,11 @@ class Merger {
         return;
       }
       std::sort(touching.begin(), touching.end());
-      std::vector<uint8_t> single(b.tris.size(), 0);
+      std::vector<uint8_t> single(b.pieces.size(), 0);
       for (uint32_t t : group)
-        for (uint32_t e = b.firstEdge[t]; e < b.firstEdge[t + 1]; ++e)
+        for (uint32_t e = b.firstEdge(t); e < b.firstEdge(t + 1); ++e)
           if (std::binary_search(touching.begin(), touching.end(), b.edges[e].a)) single[t] = 1;
-      std::vector<uint32_t> root(b.tris.size());
+      std::vector<uint32_t> root(b.pieces.size());
       std::iota(root.begin(), root.end(), 0u);
       auto rest = [&](uint32_t t) { return member_[t] == stamp && !single[t]; };
       unite(b, root, rest);
@@ -349,10 +413,12 @@ class Merger {
       return;
     }
 
-    std::unordered_map<uint32_t, uint32_t> groupUses;
-    for (uint32_t t : group)
-      for (uint32_t e = b.firstEdge[t]; e < b.firstEdge[t + 1]; ++e) ++groupUses[b.edges[e].a];
-    for (auto& ring : rings) dropCollinear(b, ring, groupUses);
+    if (cornerRule_ == Corners::DropUnsharedCollinear) {
+      std::unordered_map<uint32_t, uint32_t> groupUses;
+      for (uint32_t t : group)
+        for (uint32_t e = b.firstEdge(t); e < b.firstEdge(t + 1); ++e) ++groupUses[b.edges[e].a];
+      for (auto& ring : rings) dropCollinear(b, ring, groupUses);
+    }
     if (!emitPolygon(b, group, rings))
       for (uint32_t t : group) emitSingle(b, t);
   }
@@ -363,8 +429,8 @@ class Merger {
   std::vector<std::vector<uint32_t>> traceRings(const Bucket& b, const std::vector<uint32_t>& group, uint32_t stamp) const {
     std::vector<uint32_t> boundary;
     for (uint32_t t : group)
-      for (uint32_t e = b.firstEdge[t]; e < b.firstEdge[t + 1]; ++e)
-        if (b.twin[e] == kNone || member_[b.edges[b.twin[e]].tri] != stamp) boundary.push_back(e);
+      for (uint32_t e = b.firstEdge(t); e < b.firstEdge(t + 1); ++e)
+        if (b.twin[e] == kNone || member_[b.edges[b.twin[e]].piece] != stamp) boundary.push_back(e);
     std::sort(boundary.begin(), boundary.end(), [&](uint32_t i, uint32_t j) {
       return std::tie(b.edges[i].a, i) < std::tie(b.edges[j].a, j);
     });
@@ -398,7 +464,7 @@ class Merger {
     return rings;
   }
 
-  // Drops ring corners that are exactly collinear with their neighbours and that no triangle
+  // Drops ring corners that are exactly collinear with their neighbours and that no piece
   // outside the group uses (those would leave a T-vertex in a neighbour).
   void dropCollinear(const Bucket& b, std::vector<uint32_t>& ring, const std::unordered_map<uint32_t, uint32_t>& groupUses) const {
     for (bool changed = true; changed && ring.size() > 3;) {
@@ -450,56 +516,75 @@ class Merger {
       for (size_t j = i + 1; j < holes2.size(); ++j)
         if (mesher::boundaryDistance(holes2[i], holes2[j]) <= 0) return false;
 
-    Surface s = surfaceOf(b, group);
+    std::vector<uint32_t> pieces(group.size());
+    for (size_t i = 0; i < group.size(); ++i) pieces[i] = b.pieces[group[i]];
+    Polygon& s = addPolygon(pieces);
     s.normal = b.normal;
     for (uint32_t v : rings[outerIndex]) s.outer.push_back(points_[b.global[v]]);
     for (size_t h : holes) {
       Ring3& ring = s.holes.emplace_back();
       for (uint32_t v : rings[h]) ring.push_back(points_[b.global[v]]);
     }
-    out_.push_back(std::move(s));
     return true;
   }
 
-  // A triangle on its own, with the vertices splitting its edges, so neighbours meet it corner
-  // to corner.
+  // A piece on its own, with the vertices splitting its edges, so neighbours meet it corner to
+  // corner; its rings start where they started.
   void emitSingle(const Bucket& b, uint32_t t) {
-    Surface s = surfaceOf(b, {t});
-    s.normal = triangles_[b.tris[t]].normal;
-    mesher::Ring2 ring;
-    for (uint32_t e = b.firstEdge[t]; e < b.firstEdge[t + 1]; ++e) ring.push_back(b.p2[b.edges[e].a]);
-    // Near a needle-sharp corner one vertex may lie on both of its edges: the split ring would
-    // touch itself, so such a triangle keeps its three corners only.
-    const bool simple = mesher::isSimple(ring);
-    const std::array<uint32_t, 3>& corners = triangles_[b.tris[t]].v;
-    for (uint32_t e = b.firstEdge[t]; e < b.firstEdge[t + 1]; ++e) {
-      const uint32_t v = b.global[b.edges[e].a];
-      if (simple || std::find(corners.begin(), corners.end(), v) != corners.end()) s.outer.push_back(points_[v]);
+    const uint32_t piece = b.pieces[t];
+    const uint32_t firstRing = b.firstRing[t];
+    // Near a needle-sharp corner one vertex may lie on two of its edges: the split ring would
+    // touch itself, so such a piece keeps its own corners only.
+    bool split = false, simple = true;
+    for (uint32_t r = firstRing; r < b.firstRing[t + 1] && simple; ++r) {
+      const uint32_t given = pieces_[piece].firstRing + (r - firstRing);
+      if (b.ringFirstEdge[r + 1] - b.ringFirstEdge[r] == ringEnd_[given] - ringBegin(given)) continue;
+      split = true;
+      mesher::Ring2 ring;
+      for (uint32_t e = b.ringFirstEdge[r]; e < b.ringFirstEdge[r + 1]; ++e) ring.push_back(b.p2[b.edges[e].a]);
+      simple = mesher::isSimple(ring);
     }
-    out_.push_back(std::move(s));
+    if (!split || !simple) return emitGiven(piece);
+    Polygon& s = addPolygon({&piece, 1});
+    s.normal = pieces_[piece].normal;
+    for (uint32_t r = firstRing; r < b.firstRing[t + 1]; ++r) {
+      Ring3& ring = r == firstRing ? s.outer : s.holes.emplace_back();
+      for (uint32_t e = b.ringFirstEdge[r]; e < b.ringFirstEdge[r + 1]; ++e) ring.push_back(points_[b.global[b.edges[e].a]]);
+    }
     ++counts_.singles;
   }
 
-  Surface surfaceOf(const Bucket& b, const std::vector<uint32_t>& group) const {
-    const SceneTriangle& first = input_[triangles_[b.tris[group.front()]].source];
-    Surface s;
-    s.material = first.material;
-    s.object = first.object;
-    for (uint32_t t : group) s.area += triangles_[b.tris[t]].area;
-    s.face = std::to_string(group.size()) + (group.size() == 1 ? " triangle" : " triangles");
+  // A piece on its own, as it was given: its rings are the caller's (left empty here).
+  void emitGiven(uint32_t piece) {
+    addPolygon({&piece, 1}).normal = pieces_[piece].normal;
+    ++counts_.singles;
+  }
+
+  // A new polygon made of `pieces` (ascending), their sources recorded.
+  Polygon& addPolygon(std::span<const uint32_t> pieces) {
+    Polygon& s = out_.polygons.emplace_back();
+    for (uint32_t p : pieces) {
+      s.area += pieces_[p].area;
+      out_.sources.push_back(pieces_[p].source);
+    }
+    out_.sourcesEnd.push_back(static_cast<uint32_t>(out_.sources.size()));
     return s;
   }
 
   const Scene& scene_;
-  const std::vector<SceneTriangle>& input_;
   double tolerance_;
+  Corners cornerRule_;
   TriangleMergeCounts& counts_;
-  std::vector<Vec3> points_;         // welded
-  std::vector<Triangle> triangles_;  // with area
-  std::vector<uint32_t> uses_;       // per welded vertex: half-edges starting there, all groups
-  std::vector<uint32_t> member_;     // per local triangle of the bucket: the stamp of its group
+  std::unordered_map<Vec3, uint32_t, PointHash> index_;  // welding: point -> welded vertex
+  std::vector<Vec3> points_;            // welded
+  std::vector<uint32_t> ringCorners_;   // welded vertices, ring after ring, piece after piece
+  std::vector<uint32_t> ringEnd_;       // per ring: one past its last in ringCorners_
+  uint32_t nextRing_ = 0;               // the first ring of the piece being given
+  std::vector<Piece> pieces_;
+  std::vector<uint32_t> uses_;    // per welded vertex: half-edges starting there, all groups
+  std::vector<uint32_t> member_;  // per local piece of the bucket: the stamp of its group
   uint32_t stamp_ = 0;
-  std::vector<Surface> out_;
+  Merged out_;
 };
 
 }  // namespace
@@ -510,7 +595,76 @@ std::vector<Surface> mergeTriangles(const Scene& scene, const std::vector<SceneT
   TriangleMergeCounts& c = counts ? *counts : local;
   c = {};
   c.triangles = triangles.size();
-  return Merger(scene, triangles, tolerance, c).run();
+  Merger merger(scene, tolerance, Corners::DropUnsharedCollinear, c, 3 * triangles.size());
+  for (uint32_t i = 0; i < triangles.size(); ++i) {
+    const SceneTriangle& in = triangles[i];
+    const auto& p = in.corners;
+    const Vec3 cross = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double twiceArea = glm::length(cross);
+    const double longest = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
+    // No area: a repeated corner, or its height above the longest edge is within the tolerance.
+    if (p[0] == p[1] || p[1] == p[2] || p[2] == p[0] || !(twiceArea > tolerance * longest)) {
+      ++c.degenerate;
+      continue;
+    }
+    merger.addRing(p);
+    merger.addPiece(cross / twiceArea, twiceArea / 2, in.material, in.object, i);
+  }
+  Merged merged = merger.run();
+  std::vector<Surface> out(merged.polygons.size());
+  for (size_t k = 0; k < out.size(); ++k) {
+    Polygon& made = merged.polygons[k];
+    const std::span<const uint32_t> sources = merged.sourcesOf(k);
+    const SceneTriangle& first = triangles[sources.front()];
+    Surface& s = out[k];
+    if (made.outer.empty()) s.outer.assign(first.corners.begin(), first.corners.end());
+    else s.outer = std::move(made.outer);
+    s.holes = std::move(made.holes);
+    s.normal = made.normal;
+    s.area = made.area;
+    s.material = first.material;
+    s.object = first.object;
+    s.face = std::to_string(sources.size()) + (sources.size() == 1 ? " triangle" : " triangles");
+  }
+  return out;
+}
+
+std::vector<Surface> mergeFaces(const Scene& scene, std::vector<Surface> faces, double tolerance) {
+  TriangleMergeCounts counts;
+  size_t corners = 0;
+  for (const Surface& f : faces) {
+    corners += f.outer.size();
+    for (const Ring3& hole : f.holes) corners += hole.size();
+  }
+  Merger merger(scene, tolerance, Corners::KeepAll, counts, corners);
+  for (uint32_t i = 0; i < faces.size(); ++i) {
+    const Surface& f = faces[i];
+    merger.addRing(f.outer);
+    for (const Ring3& hole : f.holes) merger.addRing(hole);
+    merger.addPiece(f.normal, f.area, f.material, f.object, i);
+  }
+  Merged merged = merger.run();
+
+  // Back in the faces' order, each merged surface where its first face was.
+  std::vector<uint32_t> order(merged.polygons.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](uint32_t i, uint32_t j) { return merged.sourcesOf(i).front() < merged.sourcesOf(j).front(); });
+  std::vector<Surface> out;
+  out.reserve(merged.polygons.size());
+  for (uint32_t k : order) {
+    const std::span<const uint32_t> sources = merged.sourcesOf(k);
+    Polygon& made = merged.polygons[k];
+    Surface& s = out.emplace_back(std::move(faces[sources.front()]));
+    if (made.outer.empty()) continue;  // a face on its own, exactly as given
+    s.outer = std::move(made.outer);
+    s.holes = std::move(made.holes);
+    s.area = made.area;
+    for (uint32_t m : sources.subspan(1)) {
+      s.face += " + " + faces[m].face;
+      s.patchSize = std::min(s.patchSize, faces[m].patchSize);
+    }
+  }
+  return out;
 }
 
 }  // namespace engine

@@ -1,8 +1,19 @@
-// Coplanar merging for triangle meshes (thesis 3.2, for models from modellers: glTF): triangles
-// of one owner and material that lie in one plane and share edges, whole or in part, become
-// maximal planar polygons with holes, so the quadtree meshes whole walls and floors rather than
-// the modeller's triangles. Built for hundreds of thousands of triangles: vertices are welded and
-// planes grouped by hashing, edges matched by sorting; nothing is compared pairwise.
+// Coplanar merging (thesis 3.2): planar pieces of one owner and material that lie in one plane
+// and share edges, whole or in part, become maximal planar polygons with holes, so the quadtree
+// meshes whole walls and floors and coplanar neighbours cannot meet with T-vertices. One merge
+// serves both inputs: a modeller's triangles (glTF) and a scene file's faces. Built for hundreds
+// of thousands of pieces: vertices are welded and planes grouped by hashing, edges matched by
+// sorting; nothing is compared pairwise.
+//
+// The rule both share: pieces of one object, or of objects that are all fixed (movable: false),
+// of one material, facing the same way and lying in one plane within `tolerance` (scene units),
+// that share an edge or part of one, are merged. A vertex lying on another piece's edge (a
+// T-junction) splits that edge, so neighbours in a group meet vertex to vertex. Each group becomes
+// one surface: an outer ring and holes, with the input's corners exact. Where a group's boundary
+// touches itself (two holes meeting at a corner, say), the pieces at the touching corners are
+// split off as surfaces of their own and the rest is tried again, so every surface is a polygon
+// the mesher accepts. A group with more than 256 holes stays as its pieces. A piece on its own
+// keeps its rings, with the vertices splitting its edges added.
 #pragma once
 
 #include "engine/scene.h"
@@ -33,18 +44,19 @@ struct TriangleMergeCounts {
 // diagonal decides "in the plane" and "on the edge".
 constexpr double kMergeTolerance = 1e-5;
 
-// Merges triangles of one object, or of objects that are all fixed (movable: false), of one
-// material, facing the same way and lying in one plane within `tolerance` (scene units), that
-// share an edge or part of one. A vertex lying on another triangle's edge (a T-junction) splits
-// that edge, so neighbours in a group meet vertex to vertex. Each group becomes one surface: an
-// outer ring and holes, with the input's corners exact; ring corners that are exactly collinear
-// and used by no other surface are dropped. Where a group's boundary touches itself (two holes
-// meeting at a corner, say), the triangles at the touching corners are split off as surfaces of
-// their own and the rest is tried again, so every surface is a polygon the mesher accepts. A
-// group with more than 256 holes stays as triangles. Surfaces come out in a deterministic order;
-// their `face` says how many triangles they are made of; patch size and json path are the
-// caller's to set.
+// Merges a model's triangles. Ring corners that are exactly collinear and used by no other
+// surface are dropped (the modeller's triangulation leaves them along every wall). Surfaces come
+// out in a deterministic order; their `face` says how many triangles they are made of; patch size
+// and json path are the caller's to set.
 std::vector<Surface> mergeTriangles(const Scene& scene, const std::vector<SceneTriangle>& triangles, double tolerance,
                                     TriangleMergeCounts* counts = nullptr);
+
+// Merges a scene file's faces (surfaces as parseSceneFaces makes them, with their holes). Every
+// corner of every face is kept: the file's corners are the thesis' exact input vertices. A
+// surface merged from several faces keeps the first one's object, normal, json path and place in
+// the order, the smallest patch size, and its `face` lists the faces' names joined by " + ". A
+// face merged with nothing comes out as it went in, unless a coplanar neighbour's vertex lies on
+// one of its edges: that vertex is added to its ring.
+std::vector<Surface> mergeFaces(const Scene& scene, std::vector<Surface> faces, double tolerance);
 
 }  // namespace engine
