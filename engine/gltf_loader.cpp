@@ -2,10 +2,10 @@
 #include "engine/gltf_loader.h"
 
 #include "engine/contact_cutouts.h"
+#include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
 #include "engine/gltf_sidecar.h"
 #include "engine/json_reader.h"
-#include "engine/triangle_merge.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>

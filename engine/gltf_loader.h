@@ -15,7 +15,7 @@
 //   two_sided makes one material's triangles face both ways.
 // - Perspective cameras become scene cameras (looking down the node's -z, up its +y).
 // - Coplanar triangles of one object and material are merged into planar polygons with holes
-//   (triangle_merge.h), with the tolerance kMergeTolerance of the model's diagonal.
+//   (coplanar_merge.h), with the tolerance kMergeTolerance of the model's diagonal.
 // - The sidecar (gltf_sidecar.h) sets units, patch size, emission and movability; without a
 //   patch size the patch size is an eighth of the model's largest extent, as in scene files.
 // Coordinates are the file's (glTF says metres; `units` says otherwise when an exporter wrote

@@ -1,11 +1,11 @@
 #include "engine/scene_loader.h"
 
 #include "engine/contact_cutouts.h"
+#include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
 #include "engine/gltf_loader.h"
 #include "engine/json_reader.h"
 #include "engine/solid_surfaces.h"
-#include "engine/triangle_merge.h"
 
 #include <glm/common.hpp>
 

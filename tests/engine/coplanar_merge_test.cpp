@@ -1,6 +1,6 @@
 // Coplanar merging of a scene file's faces (thesis 3.2), through the loader: touching faces of
 // one material in one plane become one surface, with every corner kept.
-#include "engine/triangle_merge.h"
+#include "engine/coplanar_merge.h"
 
 #include "engine/scene_loader.h"
 #include "engine/surface_mesh.h"

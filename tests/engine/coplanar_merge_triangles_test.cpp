@@ -1,6 +1,6 @@
 // Coplanar merging of triangles (thesis 3.2 for modellers' meshes): whole walls from their
 // triangles, holes, T-junctions, boundaries touching themselves, curved parts left alone.
-#include "engine/triangle_merge.h"
+#include "engine/coplanar_merge.h"
 
 #include "engine/surface_mesh.h"
 

@@ -1,6 +1,6 @@
 // Sections: pieces, welding and plane groups | edges: pairing and T-junction splits | tracing
 // rings | a group into surfaces | the inputs: mergeTriangles, mergeFaces.
-#include "engine/triangle_merge.h"
+#include "engine/coplanar_merge.h"
 
 #include "mesher/polygon.h"
 
