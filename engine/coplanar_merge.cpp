@@ -33,13 +33,37 @@ constexpr double kOffsetCells = 4;   // plane groups: offsets rounded to this ma
 
 // Corners are welded when their coordinates are equal exactly: exporters repeat a corner once
 // per normal and texture coordinate, and a scene file's flush faces repeat each other's corners.
-// (-0.0 + 0.0 is +0.0, so both zeros hash alike.)
-struct PointHash {
-  size_t operator()(const Vec3& p) const {
+// An open-addressing table of welded vertices, at most half full, allocates nothing per corner
+// (a model has millions).
+class Welder {
+ public:
+  // For at most `corners` corners.
+  explicit Welder(size_t corners)
+      : slots_(std::bit_ceil(2 * corners + 2), kNone), shift_(64 - std::countr_zero(slots_.size())) {}
+
+  // The welded vertex at `p`, appended to `points` when new.
+  uint32_t weld(const Vec3& p, std::vector<Vec3>& points) {
+    for (size_t i = slotOf(p);; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i] == kNone) {
+        slots_[i] = static_cast<uint32_t>(points.size());
+        points.push_back(p);
+        return slots_[i];
+      }
+      if (points[slots_[i]] == p) return slots_[i];
+    }
+  }
+
+ private:
+  // Fibonacci hashing of the coordinates' bits: round numbers have no low bits to tell them
+  // apart. (-0.0 + 0.0 is +0.0, so both zeros, which compare equal, hash alike.)
+  size_t slotOf(const Vec3& p) const {
     uint64_t h = 1469598103934665603ull;
     for (int k = 0; k < 3; ++k) h = (h ^ std::bit_cast<uint64_t>(p[k] + 0.0)) * 1099511628211ull;
-    return h;
+    return static_cast<size_t>((h * 0x9e3779b97f4a7c15ull) >> shift_);
   }
+
+  std::vector<uint32_t> slots_;  // welded vertex or kNone
+  int shift_;                    // 64 - log2 of the slot count
 };
 
 struct PlaneKey {
@@ -165,20 +189,16 @@ struct Bucket {
 
 class Merger {
  public:
-  Merger(const Scene& scene, double tolerance, Corners corners, TriangleMergeCounts& counts, size_t expectedCorners)
-      : scene_(scene), tolerance_(tolerance), cornerRule_(corners), counts_(counts) {
-    index_.reserve(expectedCorners);
-    ringCorners_.reserve(expectedCorners);
+  // For pieces with at most `cornerCount` corners in all.
+  Merger(const Scene& scene, double tolerance, Corners corners, TriangleMergeCounts& counts, size_t cornerCount)
+      : scene_(scene), tolerance_(tolerance), cornerRule_(corners), counts_(counts), welder_(cornerCount) {
+    ringCorners_.reserve(cornerCount);
   }
 
   // A piece is given ring by ring (its outer ring counter-clockwise seen from the front, then its
   // holes, clockwise), then closed by addPiece.
   void addRing(std::span<const Vec3> ring) {
-    for (const Vec3& p : ring) {
-      const auto [at, added] = index_.try_emplace(p, static_cast<uint32_t>(points_.size()));
-      if (added) points_.push_back(p);
-      ringCorners_.push_back(at->second);
-    }
+    for (const Vec3& p : ring) ringCorners_.push_back(welder_.weld(p, points_));
     ringEnd_.push_back(static_cast<uint32_t>(ringCorners_.size()));
   }
 
@@ -575,7 +595,7 @@ class Merger {
   double tolerance_;
   Corners cornerRule_;
   TriangleMergeCounts& counts_;
-  std::unordered_map<Vec3, uint32_t, PointHash> index_;  // welding: point -> welded vertex
+  Welder welder_;
   std::vector<Vec3> points_;            // welded
   std::vector<uint32_t> ringCorners_;   // welded vertices, ring after ring, piece after piece
   std::vector<uint32_t> ringEnd_;       // per ring: one past its last in ringCorners_
