@@ -88,6 +88,29 @@ TEST(CoplanarMerge, FlushWallsOfFixedObjectsBecomeOneSurface) {
   EXPECT_EQ(scene.objects[fronts[0]->object].name, "west");
 }
 
+// Turned by 30 degrees, the boxes' fronts face no world axis; they still merge, with the first
+// face's normal and every corner exactly where the faces had it.
+TEST(CoplanarMerge, FlushFacesOfATurnedObjectMerge) {
+  Json pair = {{"name", "pair"}, {"rotate_y", 30}, {"solids", {box(0, 0, 1, 1), box(1, 0, 2, 1)}}};
+  const Scene scene = sceneOf({pair});
+  EXPECT_EQ(scene.surfaces.size(), 12u - 4);
+  Json apart = test::baseScene();
+  apart["objects"] = {pair};
+  const Scene faces = parseSceneFaces(apart.dump(), "faces.json");
+  for (const Surface& s : scene.surfaces) {
+    if (s.face != "side 0 + side 0") continue;
+    EXPECT_DOUBLE_EQ(s.area, 2);
+    EXPECT_EQ(s.normal, test::surfaceOf(faces, "pair", "side 0").normal);
+    for (const Vec3& p : s.outer) {
+      bool found = false;
+      for (const Surface& f : faces.surfaces) found = found || hasCorner(f.outer, p);
+      EXPECT_TRUE(found);
+    }
+    return;
+  }
+  ADD_FAILURE() << "the fronts did not merge";
+}
+
 // A 2-wide box beside two 1 x 0.5 boxes: the long box's edge meets the short ones at a
 // T-junction; it is split, the tops become one, and the junction vertex stays on the outline
 // where the two small boxes' merged side uses it.
