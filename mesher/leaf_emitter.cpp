@@ -23,6 +23,7 @@ class PointIds {
     shift_ = 64 - std::countr_zero(slots_.size());
     points_.clear();
     points_.reserve(expected);
+    listed_ = 0;
   }
 
   // The id of p, adding it with the next id when it is new (`added` says which).
@@ -39,8 +40,26 @@ class PointIds {
     const auto id = static_cast<uint32_t>(points_.size());
     slots_[slot] = id;
     points_.push_back(p);
+    ++listed_;
     added = true;
     return id;
+  }
+
+  // The next id for a point the caller knows is new: no comparisons. An unlisted point is not
+  // entered in the table (a point nothing will look up again) and only takes its id.
+  uint32_t addNew(Vec2 p) {
+    if (2 * (listed_ + 1) > slots_.size()) grow();
+    size_t slot = slotOf(p);
+    while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
+    const auto id = static_cast<uint32_t>(points_.size());
+    slots_[slot] = id;
+    points_.push_back(p);
+    ++listed_;
+    return id;
+  }
+  uint32_t addUnlisted(Vec2 p) {
+    points_.push_back(p);
+    return static_cast<uint32_t>(points_.size() - 1);
   }
 
  private:
@@ -72,6 +91,7 @@ class PointIds {
   void grow() {
     slots_.assign(slots_.size() * 2, kEmpty);
     shift_ -= 1;
+    listed_ = points_.size();  // unlisted points are entered too: harmless, nothing asks for them
     for (uint32_t id = 0; id < points_.size(); ++id) {
       size_t slot = slotOf(points_[id]);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
@@ -83,6 +103,7 @@ class PointIds {
   int shift_ = 0;
   std::vector<uint32_t> slots_;
   std::vector<Vec2> points_;  // tree coordinates, by id
+  size_t listed_ = 0;         // points entered in slots_
 };
 
 LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
@@ -118,16 +139,84 @@ void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plan
 
 LeafEmitter::~LeafEmitter() = default;
 
+void LeafEmitter::emitAll(const std::vector<int32_t>& leaves, std::vector<std::array<uint32_t, 4>>& out) {
+  eastAndNorth_.resize(built_.tree.quadrants.size());
+  inOrder_ = true;
+  for (int32_t q : leaves) emit(q, out);
+  inOrder_ = false;
+}
+
+uint32_t LeafEmitter::newPoint(Vec2 at, bool listed) {
+  const uint32_t id = listed ? ids_->addNew(at) : ids_->addUnlisted(at);
+  vertices_.push_back(built_.frame.toPlane(at));
+  return id;
+}
+
+uint32_t LeafEmitter::idOnWestOrSouth(const LeafRegion& region, Vec2 at) const {
+  const Quadtree& tree = built_.tree;
+  for (int32_t n : region.westLeaves) {
+    const Quadrant& west = tree[n];
+    const double s = static_cast<double>(tree.edgeLength(west)), y = static_cast<double>(west.y);
+    if (west.status == QuadStatus::Outside || static_cast<double>(west.x) + s != at.x) continue;
+    const auto& ids = eastAndNorth_[static_cast<size_t>(n)];
+    const uint32_t id = at.y == y ? ids[0] : at.y == y + s / 2 ? ids[1] : at.y == y + s ? ids[2] : Mesh::kNone;
+    if (id != Mesh::kNone) return id;
+  }
+  for (int32_t n : region.southLeaves) {
+    const Quadrant& south = tree[n];
+    const double s = static_cast<double>(tree.edgeLength(south)), x = static_cast<double>(south.x);
+    if (south.status == QuadStatus::Outside || static_cast<double>(south.y) + s != at.y) continue;
+    const auto& ids = eastAndNorth_[static_cast<size_t>(n)];
+    const uint32_t id = at.x == x ? ids[4] : at.x == x + s / 2 ? ids[3] : at.x == x + s ? ids[2] : Mesh::kNone;
+    if (id != Mesh::kNone) return id;
+  }
+  return Mesh::kNone;
+}
+
+void LeafEmitter::recordEastAndNorth(int32_t q) {
+  const Quadrant& leaf = built_.tree[q];
+  const double s = static_cast<double>(built_.tree.edgeLength(leaf));
+  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
+  auto& ids = eastAndNorth_[static_cast<size_t>(q)];
+  ids.fill(Mesh::kNone);
+  for (size_t i = 0; i < ring_.size(); ++i) {
+    const Vec2 p = ring_[i];
+    if (p.x == x1) {
+      if (p.y == y0) ids[0] = ringIds_[i];
+      else if (p.y == y0 + s / 2) ids[1] = ringIds_[i];
+      else if (p.y == y1) ids[2] = ringIds_[i];
+    } else if (p.y == y1) {
+      if (p.x == x0) ids[4] = ringIds_[i];
+      else if (p.x == x0 + s / 2) ids[3] = ringIds_[i];
+    }
+  }
+}
+
 const LeafRegion& LeafEmitter::region(int32_t q) {
   const LeafRegion& region = regions_.build(q);
   ring_.clear();
   ringIds_.clear();
+  const Quadrant& leaf = built_.tree[q];
+  // In tree order (inOrder_), for a leaf holding no input vertex: which points are new, which
+  // the leaves across know. A leaf holding one keeps to the table (its points may be the vertex).
+  const bool inOrder = inOrder_ && leaf.vertex < 0;
+  const double s = static_cast<double>(built_.tree.edgeLength(leaf));
+  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
   bool added;
   for (const RegionPoint& p : region.ring) {
-    uint32_t id;
+    uint32_t id = Mesh::kNone;
     if (p.inputVertex >= 0) {
       id = inputToMesh_[static_cast<size_t>(p.inputVertex)];
-    } else {
+    } else if (inOrder && ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0))) {
+      // New, unless this ring had it already (only a template's ring is known to be free of that).
+      if (region.templateKey < 0)
+        for (size_t i = 0; i < ring_.size() && id == Mesh::kNone; ++i)
+          if (ring_[i] == p.at) id = ringIds_[i];
+      if (id == Mesh::kNone) id = newPoint(p.at, true);
+    } else if (inOrder) {
+      id = idOnWestOrSouth(region, p.at);
+    }
+    if (id == Mesh::kNone) {
       id = ids_->findOrAdd(p.at, added);
       if (added) vertices_.push_back(built_.frame.toPlane(p.at));
     }
@@ -136,6 +225,7 @@ const LeafRegion& LeafEmitter::region(int32_t q) {
     // plane coordinates far from the origin would blur a straight corner into a convex one.
     ring_.push_back(p.at);
   }
+  if (inOrder_ && leaf.status != QuadStatus::Outside) recordEastAndNorth(q);
   return region;
 }
 
@@ -165,9 +255,14 @@ void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
   }
   // Ring points have their ids; the inner point and points added on the boundary are this
   // leaf's own (a template's indices are the ring's, then the inner point).
+  uint32_t innerId = Mesh::kNone;  // a template's inner point, in tree order: new, once
   auto idOf = [&](uint32_t index) {
     const int ringIndex = fromTemplate ? (index < n ? static_cast<int>(index) : -1) : subdomains_.ringIndexOf(index);
     if (ringIndex >= 0) return ringIds_[static_cast<size_t>(ringIndex)];
+    if (fromTemplate && inOrder_) {
+      if (innerId == Mesh::kNone) innerId = newPoint(inner, false);
+      return innerId;
+    }
     const Vec2 at = fromTemplate ? inner : subdomains_.points()[index];
     bool added;
     const uint32_t id = ids_->findOrAdd(at, added);

@@ -82,6 +82,8 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
   region.hinge = -1;
   region.pathPoints = 0;
   region.templateKey = -1;
+  region.westLeaves.clear();
+  region.southLeaves.clear();
   const Quadrant& leaf = tree[q];
   if (leaf.status == QuadStatus::Outside) return region;
   const double s = static_cast<double>(tree.edgeLength(leaf));
@@ -98,6 +100,8 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
   for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
     across.clear();
     tree.neighbors(q, side, across);
+    if (side == Side::West) region.westLeaves.assign(across.begin(), across.end());
+    if (side == Side::South) region.southLeaves.assign(across.begin(), across.end());
     for (int32_t n : across) {
       const Quadrant& other = tree[n];
       if (other.level <= leaf.level || other.status == QuadStatus::Outside) continue;

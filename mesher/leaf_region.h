@@ -26,6 +26,8 @@ struct LeafRegion {
   // A point its elements may share inside the leaf: the centre of a whole square, else the
   // region's centroid. Only this leaf can use it, so it cannot make a T-vertex.
   Vec2 inner{0};
+  // The leaves across the west and south sides (any status), as Quadtree::neighbors lists them.
+  std::vector<int32_t> westLeaves, southLeaves;
 };
 
 // Builds the region of leaf q: its corners and the T-vertices of finer neighbours on the inside

@@ -48,7 +48,7 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   else s.emitter.emplace(polygon, s.built, s.leaves.size());
   out.elements.clear();
   out.elements.reserve(s.leaves.size() * 2);
-  for (int32_t q : s.leaves) s.emitter->emit(q, out.elements);
+  s.emitter->emitAll(s.leaves, out.elements);
   s.emitter->swapVertices(out.vertices);
 }
 
