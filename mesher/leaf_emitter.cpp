@@ -11,60 +11,66 @@ namespace mesher {
 
 // Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
 // alike (corners are integers, crossings come from the edge and the line alone). Open addressing
-// over ids only, the points themselves kept in id order, so a quarter of a million points cost
-// no allocation each and the table stays small.
+// over entries (point and id) kept in the order they were listed, so a quarter of a million
+// points cost no allocation each and the table stays small. Ids count every point, also those
+// never listed (points only one leaf, or the tree order, can ask for).
 class PointIds {
  public:
-  // Empties the table for about `expected` points in a root square of edge `rootSize`, keeping
-  // its memory.
+  static constexpr uint32_t kNone = 0xffffffffu;
+
+  // Empties the table for about `expected` listed points in a root square of edge `rootSize`,
+  // keeping its memory; it grows as needed.
   void reset(size_t expected, double rootSize) {
     toUnit_ = 1 / rootSize;
     slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
     shift_ = 64 - std::countr_zero(slots_.size());
-    points_.clear();
-    points_.reserve(expected);
-    listed_ = 0;
+    entries_.clear();
+    entries_.reserve(expected);
+    nextId_ = 0;
   }
 
-  // The id of p, adding it with the next id when it is new (`added` says which).
+  // The id of p, listing it with the next id when it is new (`added` says which).
   uint32_t findOrAdd(Vec2 p, bool& added) {
-    if (2 * (points_.size() + 1) > slots_.size()) grow();
+    if (2 * (entries_.size() + 1) > slots_.size()) grow();
     size_t slot = slotOf(p);
     while (slots_[slot] != kEmpty) {
-      if (points_[slots_[slot]] == p) {
+      const Entry& e = entries_[slots_[slot]];
+      if (e.at == p) {
         added = false;
-        return slots_[slot];
+        return e.id;
       }
       slot = (slot + 1) & (slots_.size() - 1);
     }
-    const auto id = static_cast<uint32_t>(points_.size());
-    slots_[slot] = id;
-    points_.push_back(p);
-    ++listed_;
     added = true;
-    return id;
+    return list(slot, p);
   }
-
-  // The next id for a point the caller knows is new: no comparisons. An unlisted point is not
-  // entered in the table (a point nothing will look up again) and only takes its id.
+  // The id of a listed point p, or kNone.
+  uint32_t find(Vec2 p) const {
+    for (size_t slot = slotOf(p); slots_[slot] != kEmpty; slot = (slot + 1) & (slots_.size() - 1))
+      if (entries_[slots_[slot]].at == p) return entries_[slots_[slot]].id;
+    return kNone;
+  }
+  // The next id for a point the caller knows is new, listed without comparisons, or not listed.
   uint32_t addNew(Vec2 p) {
-    if (2 * (listed_ + 1) > slots_.size()) grow();
+    if (2 * (entries_.size() + 1) > slots_.size()) grow();
     size_t slot = slotOf(p);
     while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
-    const auto id = static_cast<uint32_t>(points_.size());
-    slots_[slot] = id;
-    points_.push_back(p);
-    ++listed_;
-    return id;
+    return list(slot, p);
   }
-  uint32_t addUnlisted(Vec2 p) {
-    points_.push_back(p);
-    return static_cast<uint32_t>(points_.size() - 1);
-  }
+  uint32_t addUnlisted() { return nextId_++; }
 
  private:
   static constexpr uint32_t kEmpty = 0xffffffffu;
+  struct Entry {
+    Vec2 at;  // tree coordinates
+    uint32_t id;
+  };
 
+  uint32_t list(size_t slot, Vec2 p) {
+    slots_[slot] = static_cast<uint32_t>(entries_.size());
+    entries_.push_back({p, nextId_});
+    return nextId_++;
+  }
   static uint64_t spreadBits(uint64_t v) {  // 32 bits to the even bits of 64
     v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
     v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
@@ -91,20 +97,31 @@ class PointIds {
   void grow() {
     slots_.assign(slots_.size() * 2, kEmpty);
     shift_ -= 1;
-    listed_ = points_.size();  // unlisted points are entered too: harmless, nothing asks for them
-    for (uint32_t id = 0; id < points_.size(); ++id) {
-      size_t slot = slotOf(points_[id]);
+    for (uint32_t i = 0; i < entries_.size(); ++i) {
+      size_t slot = slotOf(entries_[i].at);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
-      slots_[slot] = id;
+      slots_[slot] = i;
     }
   }
 
   double toUnit_ = 1;
   int shift_ = 0;
-  std::vector<uint32_t> slots_;
-  std::vector<Vec2> points_;  // tree coordinates, by id
-  size_t listed_ = 0;         // points entered in slots_
+  std::vector<uint32_t> slots_;  // entry indices
+  std::vector<Entry> entries_;
+  uint32_t nextId_ = 0;
 };
+
+namespace {
+
+// Whether leaf a comes before leaf b in tree order (Morton order of their lower-left corners, y
+// above x at each level as the children SW, SE, NW, NE are numbered).
+bool comesBefore(const Quadrant& a, const Quadrant& b) {
+  const auto dx = static_cast<uint64_t>(a.x ^ b.x), dy = static_cast<uint64_t>(a.y ^ b.y);
+  const bool xDecides = dy < dx && dy < (dy ^ dx);  // the highest differing bit is x's
+  return xDecides ? a.x < b.x : a.y < b.y;
+}
+
+}  // namespace
 
 LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
     : built_(built), ids_(std::make_unique<PointIds>()), regions_(built.tree) {
@@ -112,7 +129,8 @@ LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& bui
 }
 
 void LeafEmitter::reset(const PolygonWithHoles& polygon, size_t expectedLeaves) {
-  ids_->reset(expectedLeaves + built_.tree.input.vertices.size(), std::exp2(built_.tree.maxDepth));
+  // Emitted in tree order, few points are listed (see inOrder_); leaf by leaf, the table grows.
+  ids_->reset(expectedLeaves / 8 + built_.tree.input.vertices.size(), std::exp2(built_.tree.maxDepth));
   vertices_.clear();
   vertices_.reserve(expectedLeaves * 2);
   vertices_.insert(vertices_.end(), polygon.outer.begin(), polygon.outer.end());
@@ -147,48 +165,56 @@ void LeafEmitter::emitAll(const std::vector<int32_t>& leaves, std::vector<std::a
 }
 
 uint32_t LeafEmitter::newPoint(Vec2 at, bool listed) {
-  const uint32_t id = listed ? ids_->addNew(at) : ids_->addUnlisted(at);
+  const uint32_t id = listed ? ids_->addNew(at) : ids_->addUnlisted();
   vertices_.push_back(built_.frame.toPlane(at));
   return id;
 }
 
-uint32_t LeafEmitter::idOnWestOrSouth(const LeafRegion& region, Vec2 at) const {
+namespace {
+
+// Which of a leaf's recorded east and north positions (LeafEmitter::eastAndNorth_) point p is,
+// or -1.
+int eastOrNorthPosition(const Quadtree& tree, const Quadrant& leaf, Vec2 p) {
+  const double s = static_cast<double>(tree.edgeLength(leaf));
+  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
+  if (p.x == x1) return p.y == y0 ? 0 : p.y == y0 + s / 2 ? 1 : p.y == y1 ? 2 : -1;
+  if (p.y == y1) return p.x == x0 ? 4 : p.x == x0 + s / 2 ? 3 : -1;
+  return -1;
+}
+
+}  // namespace
+
+uint32_t LeafEmitter::recordedBy(int32_t m, Vec2 at) const {
+  const Quadrant& leaf = built_.tree[m];
+  if (leaf.status == QuadStatus::Outside) return Mesh::kNone;
+  const int position = eastOrNorthPosition(built_.tree, leaf, at);
+  return position < 0 ? Mesh::kNone : eastAndNorth_[static_cast<size_t>(m)][static_cast<size_t>(position)];
+}
+
+uint32_t LeafEmitter::earlierId(int32_t q, const LeafRegion& region, Vec2 at) const {
+  // The leaves across first (the region found them), then the table, then every leaf around the
+  // point that came earlier (a corner shared only across a diagonal, a neighbour Outside).
+  for (int32_t n : region.westLeaves)
+    if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
+  for (int32_t n : region.southLeaves)
+    if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
+  if (const uint32_t id = ids_->find(at); id != Mesh::kNone) return id;
   const Quadtree& tree = built_.tree;
-  for (int32_t n : region.westLeaves) {
-    const Quadrant& west = tree[n];
-    const double s = static_cast<double>(tree.edgeLength(west)), y = static_cast<double>(west.y);
-    if (west.status == QuadStatus::Outside || static_cast<double>(west.x) + s != at.x) continue;
-    const auto& ids = eastAndNorth_[static_cast<size_t>(n)];
-    const uint32_t id = at.y == y ? ids[0] : at.y == y + s / 2 ? ids[1] : at.y == y + s ? ids[2] : Mesh::kNone;
-    if (id != Mesh::kNone) return id;
-  }
-  for (int32_t n : region.southLeaves) {
-    const Quadrant& south = tree[n];
-    const double s = static_cast<double>(tree.edgeLength(south)), x = static_cast<double>(south.x);
-    if (south.status == QuadStatus::Outside || static_cast<double>(south.y) + s != at.y) continue;
-    const auto& ids = eastAndNorth_[static_cast<size_t>(n)];
-    const uint32_t id = at.x == x ? ids[4] : at.x == x + s / 2 ? ids[3] : at.x == x + s ? ids[2] : Mesh::kNone;
-    if (id != Mesh::kNone) return id;
+  for (int k = 0; k < 4; ++k) {
+    const int32_t m = tree.leafAt(at + Vec2{k & 1 ? 0.25 : -0.25, k & 2 ? 0.25 : -0.25});  // leaves are 1 unit or more
+    if (m < 0 || m == q || !comesBefore(tree[m], tree[q])) continue;
+    if (const uint32_t id = recordedBy(m, at); id != Mesh::kNone) return id;
   }
   return Mesh::kNone;
 }
 
 void LeafEmitter::recordEastAndNorth(int32_t q) {
   const Quadrant& leaf = built_.tree[q];
-  const double s = static_cast<double>(built_.tree.edgeLength(leaf));
-  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
   auto& ids = eastAndNorth_[static_cast<size_t>(q)];
   ids.fill(Mesh::kNone);
   for (size_t i = 0; i < ring_.size(); ++i) {
-    const Vec2 p = ring_[i];
-    if (p.x == x1) {
-      if (p.y == y0) ids[0] = ringIds_[i];
-      else if (p.y == y0 + s / 2) ids[1] = ringIds_[i];
-      else if (p.y == y1) ids[2] = ringIds_[i];
-    } else if (p.y == y1) {
-      if (p.x == x0) ids[4] = ringIds_[i];
-      else if (p.x == x0 + s / 2) ids[3] = ringIds_[i];
-    }
+    const int position = eastOrNorthPosition(built_.tree, leaf, ring_[i]);
+    if (position >= 0) ids[static_cast<size_t>(position)] = ringIds_[i];
   }
 }
 
@@ -196,29 +222,31 @@ const LeafRegion& LeafEmitter::region(int32_t q) {
   const LeafRegion& region = regions_.build(q);
   ring_.clear();
   ringIds_.clear();
-  const Quadrant& leaf = built_.tree[q];
-  // In tree order (inOrder_), for a leaf holding no input vertex: which points are new, which
-  // the leaves across know. A leaf holding one keeps to the table (its points may be the vertex).
-  const bool inOrder = inOrder_ && leaf.vertex < 0;
-  const double s = static_cast<double>(built_.tree.edgeLength(leaf));
+  const Quadtree& tree = built_.tree;
+  const Quadrant& leaf = tree[q];
+  const double s = static_cast<double>(tree.edgeLength(leaf));
   const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
   bool added;
   for (const RegionPoint& p : region.ring) {
     uint32_t id = Mesh::kNone;
     if (p.inputVertex >= 0) {
       id = inputToMesh_[static_cast<size_t>(p.inputVertex)];
-    } else if (inOrder && ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0))) {
-      // New, unless this ring had it already (only a template's ring is known to be free of that).
+    } else if (!inOrder_) {
+      id = ids_->findOrAdd(p.at, added);
+      if (added) vertices_.push_back(built_.frame.toPlane(p.at));
+    } else if ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0)) {
+      // New (see inOrder_), unless it is the leaf's input vertex or this ring had it already
+      // (a template's ring is known to be free of both).
+      if (leaf.vertex >= 0 && p.at == tree.input.vertices[static_cast<size_t>(leaf.vertex)])
+        id = inputToMesh_[static_cast<size_t>(leaf.vertex)];
       if (region.templateKey < 0)
         for (size_t i = 0; i < ring_.size() && id == Mesh::kNone; ++i)
           if (ring_[i] == p.at) id = ringIds_[i];
+      // A point at a recorded position is found there; any other one goes in the table.
+      if (id == Mesh::kNone) id = newPoint(p.at, eastOrNorthPosition(tree, leaf, p.at) < 0);
+    } else {
+      id = earlierId(q, region, p.at);
       if (id == Mesh::kNone) id = newPoint(p.at, true);
-    } else if (inOrder) {
-      id = idOnWestOrSouth(region, p.at);
-    }
-    if (id == Mesh::kNone) {
-      id = ids_->findOrAdd(p.at, added);
-      if (added) vertices_.push_back(built_.frame.toPlane(p.at));
     }
     ringIds_.push_back(id);
     // Shapes are judged in tree coordinates, where points on one grid line are exactly in line;

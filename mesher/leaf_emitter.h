@@ -48,7 +48,10 @@ class LeafEmitter {
  private:
   const LeafRegion& region(int32_t q);
   uint32_t newPoint(Vec2 at, bool listed);
-  uint32_t idOnWestOrSouth(const LeafRegion& region, Vec2 at) const;
+  // In tree order: the id leaf m recorded at point `at` of its east or north side, and the id a
+  // leaf before q gave point `at` of q's west or south side; kNone when there is none.
+  uint32_t recordedBy(int32_t m, Vec2 at) const;
+  uint32_t earlierId(int32_t q, const LeafRegion& region, Vec2 at) const;
   void recordEastAndNorth(int32_t q);
 
   const PolygonTree& built_;
@@ -66,9 +69,10 @@ class LeafEmitter {
   std::array<bool, 16> haveTemplate_{};
   // Set by emitAll. Leaves then come in tree (Morton) order, in which every leaf touching a
   // point on a leaf's east or north side, other than its south-east and north-west corners,
-  // comes later: such a point is new there, unless it is an input vertex. Points on the west and
-  // south sides come from the ids the leaves across recorded for their east and north sides.
-  // A leaf's inner point is its own and never looked up again, so it stays out of the table.
+  // comes later: such a point is new there, unless it is an input vertex. A new point at one of
+  // the positions eastAndNorth_ records is found there later, by the leaves across or around
+  // it that came earlier, and stays out of the point table; so does an interior square's inner
+  // point, which no other leaf touches. Everything else is listed as before.
   bool inOrder_ = false;
   // Per quadrant, the ids on its east and north sides: south-east corner, east midpoint,
   // north-east corner, north midpoint, north-west corner (0xffffffff: none there). Written for
