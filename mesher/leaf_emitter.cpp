@@ -157,10 +157,10 @@ void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plan
 
 LeafEmitter::~LeafEmitter() = default;
 
-void LeafEmitter::emitAll(const std::vector<int32_t>& leaves, std::vector<std::array<uint32_t, 4>>& out) {
+void LeafEmitter::emitAll(std::vector<std::array<uint32_t, 4>>& out) {
   eastAndNorth_.resize(built_.tree.quadrants.size());
   inOrder_ = true;
-  for (int32_t q : leaves) emit(q, out);
+  built_.tree.forEachLeafWithAdjacent([&](int32_t q, const std::array<int32_t, 4>& adjacent) { emit(q, &adjacent, out); });
   inOrder_ = false;
 }
 
@@ -218,8 +218,8 @@ void LeafEmitter::recordEastAndNorth(int32_t q) {
   }
 }
 
-const LeafRegion& LeafEmitter::region(int32_t q) {
-  const LeafRegion& region = regions_.build(q);
+const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* adjacent) {
+  const LeafRegion& region = regions_.build(q, adjacent);
   ring_.clear();
   ringIds_.clear();
   const Quadtree& tree = built_.tree;
@@ -262,8 +262,10 @@ const std::vector<uint32_t>& LeafEmitter::ringIds(int32_t q) {
   return ringIds_;
 }
 
-void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
-  const LeafRegion& leaf = region(q);
+void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) { emit(q, nullptr, out); }
+
+void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::vector<std::array<uint32_t, 4>>& out) {
+  const LeafRegion& leaf = region(q, adjacent);
   if (leaf.ring.empty()) return;
   const Vec2 inner = leaf.inner;
   const size_t n = ring_.size();

@@ -28,10 +28,10 @@ class LeafEmitter {
   // Appends leaf q's elements to `out` (corner ids, counter-clockwise, [3] = 0xffffffff for
   // triangles) and any new vertex to vertices(). Outside leaves add nothing.
   void emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out);
-  // emit() for every leaf of the tree, `leaves` in tree order (Quadtree::leaves), right after
+  // emit() for every leaf of the tree in tree order (Quadtree::leaves), right after
   // construction or reset(): the same elements and vertices, found mostly without the point
   // table (see inOrder_). The emitter is then fit for emit() again.
-  void emitAll(const std::vector<int32_t>& leaves, std::vector<std::array<uint32_t, 4>>& out);
+  void emitAll(std::vector<std::array<uint32_t, 4>>& out);
   // The vertex ids around leaf q's region, as emit() would use them: equal rings give equal
   // elements. lastRingIds() is the ring of the last emit() or ringIds() call.
   const std::vector<uint32_t>& ringIds(int32_t q);
@@ -46,7 +46,8 @@ class LeafEmitter {
   void swapVertices(std::vector<Vec2>& other) { vertices_.swap(other); }
 
  private:
-  const LeafRegion& region(int32_t q);
+  const LeafRegion& region(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
+  void emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::vector<std::array<uint32_t, 4>>& out);
   uint32_t newPoint(Vec2 at, bool listed);
   // In tree order: the id leaf m recorded at point `at` of its east or north side, and the id a
   // leaf before q gave point `at` of q's west or south side; kNone when there is none.

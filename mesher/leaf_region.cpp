@@ -75,7 +75,7 @@ int midpointSides(const std::vector<RegionPoint>& points, double x0, double y0, 
 
 }  // namespace
 
-const LeafRegion& LeafRegionBuilder::build(int32_t q) {
+const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 4>* adjacent) {
   const Quadtree& tree = tree_;
   LeafRegion& region = region_;
   region.ring.clear();
@@ -99,7 +99,8 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
   std::vector<int32_t>& across = across_;
   for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
     across.clear();
-    tree.neighbors(q, side, across);
+    if (adjacent) tree.leavesFacing((*adjacent)[static_cast<size_t>(side)], side, across);
+    else tree.neighbors(q, side, across);
     if (side == Side::West) region.westLeaves.assign(across.begin(), across.end());
     if (side == Side::South) region.southLeaves.assign(across.begin(), across.end());
     for (int32_t n : across) {

@@ -4,6 +4,7 @@
 
 #include "mesher/quadtree.h"
 
+#include <array>
 #include <vector>
 
 namespace mesher {
@@ -38,7 +39,8 @@ struct LeafRegion {
 class LeafRegionBuilder {
  public:
   explicit LeafRegionBuilder(const Quadtree& tree) : tree_(tree) {}
-  const LeafRegion& build(int32_t q);
+  // `adjacent`, when given, is tree.adjacent(q, side) for West, East, South, North.
+  const LeafRegion& build(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
 
  private:
   const Quadtree& tree_;

@@ -375,8 +375,9 @@ int32_t Quadtree::adjacent(int32_t q, Side side) const {
   return (*this)[across].firstChild + (child ^ bit);
 }
 
-void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const {
-  const int32_t r = adjacent(q, side);
+void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const { leavesFacing(adjacent(q, side), side, out); }
+
+void Quadtree::leavesFacing(int32_t r, Side side, std::vector<int32_t>& out) const {
   if (r < 0) return;
   // A leaf there is the one neighbour; otherwise its leaves along the facing side, found in
   // `out` itself (no allocation): a node is replaced by its first facing child and the second is
