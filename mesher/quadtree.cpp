@@ -72,13 +72,15 @@ void Quadtree::addChildren(int32_t q) {
   const auto first = static_cast<int32_t>(quadrants.size());
   const Quadrant parent = quadrants[static_cast<size_t>(q)];
   const int64_t half = edgeLength(parent) / 2;
+  // Written in place: a child built aside and copied in was stored field by field and read back
+  // whole, which stalled on every copy.
+  quadrants.resize(quadrants.size() + 4);
   for (int c = 0; c < 4; ++c) {
-    Quadrant child;
+    Quadrant& child = quadrants[static_cast<size_t>(first + c)];
     child.x = parent.x + (c & 1 ? half : 0);
     child.y = parent.y + (c & 2 ? half : 0);
-    child.level = parent.level + 1;
+    child.level = static_cast<uint8_t>(parent.level + 1);
     child.parent = q;
-    quadrants.push_back(child);
   }
   Quadrant& node = quadrants[static_cast<size_t>(q)];
   node.firstChild = first;
