@@ -111,18 +111,6 @@ class PointIds {
   uint32_t nextId_ = 0;
 };
 
-namespace {
-
-// Whether leaf a comes before leaf b in tree order (Morton order of their lower-left corners, y
-// above x at each level as the children SW, SE, NW, NE are numbered).
-bool comesBefore(const Quadrant& a, const Quadrant& b) {
-  const auto dx = static_cast<uint64_t>(a.x ^ b.x), dy = static_cast<uint64_t>(a.y ^ b.y);
-  const bool xDecides = dy < dx && dy < (dy ^ dx);  // the highest differing bit is x's
-  return xDecides ? a.x < b.x : a.y < b.y;
-}
-
-}  // namespace
-
 LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
     : built_(built), ids_(std::make_unique<PointIds>()), regions_(built.tree) {
   reset(polygon, expectedLeaves);
@@ -194,12 +182,14 @@ uint32_t LeafEmitter::recordedBy(int32_t m, Vec2 at) const {
 uint32_t LeafEmitter::earlierId(int32_t q, const LeafRegion& region, Vec2 at) const {
   // The leaves across first (the region found them), then the table, then every leaf around the
   // point that came earlier (a corner shared only across a diagonal, a neighbour Outside).
-  for (int32_t n : region.westLeaves)
-    if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
-  for (int32_t n : region.southLeaves)
-    if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
-  if (const uint32_t id = ids_->find(at); id != Mesh::kNone) return id;
   const Quadtree& tree = built_.tree;
+  if (at.x == static_cast<double>(tree[q].x))
+    for (int32_t n : region.westLeaves)
+      if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
+  if (at.y == static_cast<double>(tree[q].y))
+    for (int32_t n : region.southLeaves)
+      if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
+  if (const uint32_t id = ids_->find(at); id != Mesh::kNone) return id;
   for (int k = 0; k < 4; ++k) {
     const int32_t m = tree.leafAt(at + Vec2{k & 1 ? 0.25 : -0.25, k & 2 ? 0.25 : -0.25});  // leaves are 1 unit or more
     if (m < 0 || m == q || !comesBefore(tree[m], tree[q])) continue;

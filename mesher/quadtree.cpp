@@ -339,6 +339,18 @@ void Quadtree::leaves(std::vector<int32_t>& out) const {
   }
 }
 
+void Quadtree::vertexLeaves(std::vector<int32_t>& out) const {
+  // From each vertex down to the leaves holding it, instead of a walk through every leaf.
+  out.clear();
+  for (const Vec2& p : input.vertices)
+    descend(*this, 0, [&](int32_t q) { return holdsPoint(q, p); }, [&](int32_t q) {
+      if ((*this)[q].vertex >= 0) out.push_back(q);
+      return Visit::Done;
+    });
+  std::sort(out.begin(), out.end(), [&](int32_t a, int32_t b) { return comesBefore((*this)[a], (*this)[b]); });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 void Quadtree::leavesBelow(int32_t q, std::vector<int32_t>& out) const {
   const Quadrant& quad = quadrants[static_cast<size_t>(q)];
   if (quad.isLeaf()) {

@@ -61,6 +61,8 @@ class Quadtree {
   // Leaves only, in tree order (into `out`, replacing what it held).
   std::vector<int32_t> leaves() const;
   void leaves(std::vector<int32_t>& out) const;
+  // The leaves holding an input vertex (in their closed square), in tree order, into `out`.
+  void vertexLeaves(std::vector<int32_t>& out) const;
   // The leaves below quadrant q (q itself when it is a leaf), in tree order, appended to `out`;
   // a split may have gone deeper than one level where a child broke a storage rule.
   void leavesBelow(int32_t q, std::vector<int32_t>& out) const;
@@ -127,6 +129,14 @@ class Quadtree {
   // The input edges through node q's open square (all of them are checked: a merge is rare).
   void edgesThrough(int32_t q, std::vector<uint32_t>& out) const;
 };
+
+// Whether leaf a comes before leaf b in tree order: the Morton order of their lower-left
+// corners, y above x at each level as the children SW, SE, NW, NE are numbered.
+inline bool comesBefore(const Quadrant& a, const Quadrant& b) {
+  const auto dx = static_cast<uint64_t>(a.x ^ b.x), dy = static_cast<uint64_t>(a.y ^ b.y);
+  const bool xDecides = dy < dx && dy < (dy ^ dx);  // the highest differing bit is x's
+  return xDecides ? a.x < b.x : a.y < b.y;
+}
 
 // A plane point in tree coordinates: within the root square, snapped onto grid lines it lies
 // within frame.gridSnap of.

@@ -36,9 +36,9 @@ size_t QualityRefiner::refine() {
   Quadtree& tree = built_.tree;
   size_t splits = 0;
   seeds_.clear();
-  tree.leaves(leaves_);
+  tree.vertexLeaves(leaves_);
   for (int32_t q : leaves_) {
-    if (tree[q].vertex < 0 || !nearASide(tree, q) || reachesBound(q)) continue;
+    if (!nearASide(tree, q) || reachesBound(q)) continue;
     // The vertex's leaf is split until it reaches the bound, a few levels at most; splits that
     // do not get there (a vertex a hair from a grid line stays that close to it, relatively, for
     // many levels) are taken back.
