@@ -190,9 +190,15 @@ uint32_t LeafEmitter::earlierId(int32_t q, const LeafRegion& region, Vec2 at) co
     for (int32_t n : region.southLeaves)
       if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
   if (const uint32_t id = ids_->find(at); id != Mesh::kNone) return id;
+  const Quadrant& leaf = tree[q];
+  const double s = static_cast<double>(tree.edgeLength(leaf)), root = static_cast<double>(tree.edgeLength(tree[0]));
   for (int k = 0; k < 4; ++k) {
-    const int32_t m = tree.leafAt(at + Vec2{k & 1 ? 0.25 : -0.25, k & 2 ? 0.25 : -0.25});  // leaves are 1 unit or more
-    if (m < 0 || m == q || !comesBefore(tree[m], tree[q])) continue;
+    const Vec2 probe = at + Vec2{k & 1 ? 0.25 : -0.25, k & 2 ? 0.25 : -0.25};  // leaves are 1 unit or more
+    const bool inLeaf = probe.x >= static_cast<double>(leaf.x) && probe.x < static_cast<double>(leaf.x) + s &&
+                        probe.y >= static_cast<double>(leaf.y) && probe.y < static_cast<double>(leaf.y) + s;
+    if (inLeaf || probe.x < 0 || probe.y < 0 || probe.x >= root || probe.y >= root) continue;
+    const int32_t m = tree.leafAt(probe);
+    if (m < 0 || m == q || !comesBefore(tree[m], leaf)) continue;
     if (const uint32_t id = recordedBy(m, at); id != Mesh::kNone) return id;
   }
   return Mesh::kNone;

@@ -361,7 +361,7 @@ void Quadtree::leavesBelow(int32_t q, std::vector<int32_t>& out) const {
 }
 
 int32_t Quadtree::leafAt(Vec2 p) const {
-  const double root = std::exp2(maxDepth);
+  const auto root = static_cast<double>(int64_t{1} << maxDepth);  // exact: maxDepth is at most kDeepestTree
   if (!(p.x >= 0 && p.y >= 0 && p.x < root && p.y < root)) return -1;
   int32_t q = 0;
   while (!quadrants[static_cast<size_t>(q)].isLeaf()) {
