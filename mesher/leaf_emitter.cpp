@@ -30,7 +30,7 @@ class PointIds {
   }
 
   // The id of p, listing it with the next id when it is new (`added` says which).
-  uint32_t findOrAdd(Vec2 p, bool& added) {
+  uint32_t findOrAdd(const Vec2& p, bool& added) {
     if (2 * (entries_.size() + 1) > slots_.size()) grow();
     size_t slot = slotOf(p);
     while (slots_[slot] != kEmpty) {
@@ -45,13 +45,13 @@ class PointIds {
     return list(slot, p);
   }
   // The id of a listed point p, or kNone.
-  uint32_t find(Vec2 p) const {
+  uint32_t find(const Vec2& p) const {
     for (size_t slot = slotOf(p); slots_[slot] != kEmpty; slot = (slot + 1) & (slots_.size() - 1))
       if (entries_[slots_[slot]].at == p) return entries_[slots_[slot]].id;
     return kNone;
   }
   // The next id for a point the caller knows is new, listed without comparisons, or not listed.
-  uint32_t addNew(Vec2 p) {
+  uint32_t addNew(const Vec2& p) {
     if (2 * (entries_.size() + 1) > slots_.size()) grow();
     size_t slot = slotOf(p);
     while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
@@ -66,7 +66,7 @@ class PointIds {
     uint32_t id;
   };
 
-  uint32_t list(size_t slot, Vec2 p) {
+  uint32_t list(size_t slot, const Vec2& p) {
     slots_[slot] = static_cast<uint32_t>(entries_.size());
     entries_.push_back({p, nextId_});
     return nextId_++;
@@ -82,7 +82,7 @@ class PointIds {
   // in), scattered within a window of 65,536 slots (256 KiB) by a hash of the exact point:
   // lookups stay near each other in memory, and points crowded into one cell (along a narrow
   // gap) do not share one probe run, which made lookups quadratic.
-  size_t slotOf(Vec2 p) const {
+  size_t slotOf(const Vec2& p) const {
     const auto x = static_cast<uint64_t>(std::clamp(p.x * toUnit_, 0.0, 1.0) * 4294967295.0);
     const auto y = static_cast<uint64_t>(std::clamp(p.y * toUnit_, 0.0, 1.0) * 4294967295.0);
     uint64_t a, b;
@@ -152,7 +152,7 @@ void LeafEmitter::emitAll(std::vector<std::array<uint32_t, 4>>& out) {
   inOrder_ = false;
 }
 
-uint32_t LeafEmitter::newPoint(Vec2 at, bool listed) {
+uint32_t LeafEmitter::newPoint(const Vec2& at, bool listed) {
   const uint32_t id = listed ? ids_->addNew(at) : ids_->addUnlisted();
   vertices_.push_back(built_.frame.toPlane(at));
   return id;
@@ -162,7 +162,7 @@ namespace {
 
 // Which of a leaf's recorded east and north positions (LeafEmitter::eastAndNorth_) point p is,
 // or -1.
-int eastOrNorthPosition(const Quadtree& tree, const Quadrant& leaf, Vec2 p) {
+int eastOrNorthPosition(const Quadtree& tree, const Quadrant& leaf, const Vec2& p) {
   const double s = static_cast<double>(tree.edgeLength(leaf));
   const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
   if (p.x == x1) return p.y == y0 ? 0 : p.y == y0 + s / 2 ? 1 : p.y == y1 ? 2 : -1;
@@ -172,14 +172,14 @@ int eastOrNorthPosition(const Quadtree& tree, const Quadrant& leaf, Vec2 p) {
 
 }  // namespace
 
-uint32_t LeafEmitter::recordedBy(int32_t m, Vec2 at) const {
+uint32_t LeafEmitter::recordedBy(int32_t m, const Vec2& at) const {
   const Quadrant& leaf = built_.tree[m];
   if (leaf.status == QuadStatus::Outside) return Mesh::kNone;
   const int position = eastOrNorthPosition(built_.tree, leaf, at);
   return position < 0 ? Mesh::kNone : eastAndNorth_[static_cast<size_t>(m)][static_cast<size_t>(position)];
 }
 
-uint32_t LeafEmitter::earlierId(int32_t q, const LeafRegion& region, Vec2 at) const {
+uint32_t LeafEmitter::earlierId(int32_t q, const LeafRegion& region, const Vec2& at) const {
   // The leaves across first (the region found them), then the table, then every leaf around the
   // point that came earlier (a corner shared only across a diagonal, a neighbour Outside).
   const Quadtree& tree = built_.tree;

@@ -48,11 +48,11 @@ class LeafEmitter {
  private:
   const LeafRegion& region(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
   void emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::vector<std::array<uint32_t, 4>>& out);
-  uint32_t newPoint(Vec2 at, bool listed);
+  uint32_t newPoint(const Vec2& at, bool listed);
   // In tree order: the id leaf m recorded at point `at` of its east or north side, and the id a
   // leaf before q gave point `at` of q's west or south side; kNone when there is none.
-  uint32_t recordedBy(int32_t m, Vec2 at) const;
-  uint32_t earlierId(int32_t q, const LeafRegion& region, Vec2 at) const;
+  uint32_t recordedBy(int32_t m, const Vec2& at) const;
+  uint32_t earlierId(int32_t q, const LeafRegion& region, const Vec2& at) const;
   void recordEastAndNorth(int32_t q);
 
   const PolygonTree& built_;
