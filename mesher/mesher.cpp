@@ -44,8 +44,14 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   s.built.tree.changes.clear();
   // Every node has four children (nothing was merged): a quarter of the rest are nodes.
   const size_t leaves = (3 * s.built.tree.quadrants.size() + 1) / 4;
-  if (s.emitter) s.emitter->reset(polygon, leaves);
-  else s.emitter.emplace(polygon, s.built, leaves);
+  if (!s.emitter) {
+    s.emitter.emplace(polygon, s.built, leaves);
+  } else {
+    // The emitter fills the vertex memory `out` had (it handed over the last polygon's): a
+    // second buffer of its own would be fresh pages once more.
+    s.emitter->swapVertices(out.vertices);
+    s.emitter->reset(polygon, leaves);
+  }
   out.elements.clear();
   out.elements.reserve(leaves * 2);
   s.emitter->emitAll(out.elements);
