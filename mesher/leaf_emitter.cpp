@@ -11,41 +11,66 @@ namespace mesher {
 
 // Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
 // alike (corners are integers, crossings come from the edge and the line alone). Open addressing
-// over ids only, the points themselves kept in id order, so a quarter of a million points cost
-// no allocation each and the table stays small.
+// over entries (point and id) kept in the order they were listed, so a quarter of a million
+// points cost no allocation each and the table stays small. Ids count every point, also those
+// never listed (points only one leaf, or the tree order, can ask for).
 class PointIds {
  public:
-  // Empties the table for about `expected` points in a root square of edge `rootSize`, keeping
-  // its memory.
+  static constexpr uint32_t kNone = 0xffffffffu;
+
+  // Empties the table for about `expected` listed points in a root square of edge `rootSize`,
+  // keeping its memory; it grows as needed.
   void reset(size_t expected, double rootSize) {
     toUnit_ = 1 / rootSize;
     slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
     shift_ = 64 - std::countr_zero(slots_.size());
-    points_.clear();
-    points_.reserve(expected);
+    entries_.clear();
+    entries_.reserve(expected);
+    nextId_ = 0;
   }
 
-  // The id of p, adding it with the next id when it is new (`added` says which).
-  uint32_t findOrAdd(Vec2 p, bool& added) {
-    if (2 * (points_.size() + 1) > slots_.size()) grow();
+  // The id of p, listing it with the next id when it is new (`added` says which).
+  uint32_t findOrAdd(const Vec2& p, bool& added) {
+    if (2 * (entries_.size() + 1) > slots_.size()) grow();
     size_t slot = slotOf(p);
     while (slots_[slot] != kEmpty) {
-      if (points_[slots_[slot]] == p) {
+      const Entry& e = entries_[slots_[slot]];
+      if (e.at == p) {
         added = false;
-        return slots_[slot];
+        return e.id;
       }
       slot = (slot + 1) & (slots_.size() - 1);
     }
-    const auto id = static_cast<uint32_t>(points_.size());
-    slots_[slot] = id;
-    points_.push_back(p);
     added = true;
-    return id;
+    return list(slot, p);
   }
+  // The id of a listed point p, or kNone.
+  uint32_t find(const Vec2& p) const {
+    for (size_t slot = slotOf(p); slots_[slot] != kEmpty; slot = (slot + 1) & (slots_.size() - 1))
+      if (entries_[slots_[slot]].at == p) return entries_[slots_[slot]].id;
+    return kNone;
+  }
+  // The next id for a point the caller knows is new, listed without comparisons, or not listed.
+  uint32_t addNew(const Vec2& p) {
+    if (2 * (entries_.size() + 1) > slots_.size()) grow();
+    size_t slot = slotOf(p);
+    while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
+    return list(slot, p);
+  }
+  uint32_t addUnlisted() { return nextId_++; }
 
  private:
   static constexpr uint32_t kEmpty = 0xffffffffu;
+  struct Entry {
+    Vec2 at;  // tree coordinates
+    uint32_t id;
+  };
 
+  uint32_t list(size_t slot, const Vec2& p) {
+    slots_[slot] = static_cast<uint32_t>(entries_.size());
+    entries_.push_back({p, nextId_});
+    return nextId_++;
+  }
   static uint64_t spreadBits(uint64_t v) {  // 32 bits to the even bits of 64
     v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
     v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
@@ -57,7 +82,7 @@ class PointIds {
   // in), scattered within a window of 65,536 slots (256 KiB) by a hash of the exact point:
   // lookups stay near each other in memory, and points crowded into one cell (along a narrow
   // gap) do not share one probe run, which made lookups quadratic.
-  size_t slotOf(Vec2 p) const {
+  size_t slotOf(const Vec2& p) const {
     const auto x = static_cast<uint64_t>(std::clamp(p.x * toUnit_, 0.0, 1.0) * 4294967295.0);
     const auto y = static_cast<uint64_t>(std::clamp(p.y * toUnit_, 0.0, 1.0) * 4294967295.0);
     uint64_t a, b;
@@ -72,17 +97,18 @@ class PointIds {
   void grow() {
     slots_.assign(slots_.size() * 2, kEmpty);
     shift_ -= 1;
-    for (uint32_t id = 0; id < points_.size(); ++id) {
-      size_t slot = slotOf(points_[id]);
+    for (uint32_t i = 0; i < entries_.size(); ++i) {
+      size_t slot = slotOf(entries_[i].at);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
-      slots_[slot] = id;
+      slots_[slot] = i;
     }
   }
 
   double toUnit_ = 1;
   int shift_ = 0;
-  std::vector<uint32_t> slots_;
-  std::vector<Vec2> points_;  // tree coordinates, by id
+  std::vector<uint32_t> slots_;  // entry indices
+  std::vector<Entry> entries_;
+  uint32_t nextId_ = 0;
 };
 
 LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
@@ -91,7 +117,8 @@ LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& bui
 }
 
 void LeafEmitter::reset(const PolygonWithHoles& polygon, size_t expectedLeaves) {
-  ids_->reset(expectedLeaves + built_.tree.input.vertices.size(), std::exp2(built_.tree.maxDepth));
+  // Emitted in tree order, few points are listed (see inOrder_); leaf by leaf, the table grows.
+  ids_->reset(expectedLeaves / 8 + built_.tree.input.vertices.size(), std::exp2(built_.tree.maxDepth));
   vertices_.clear();
   vertices_.reserve(expectedLeaves * 2);
   vertices_.insert(vertices_.end(), polygon.outer.begin(), polygon.outer.end());
@@ -118,24 +145,111 @@ void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plan
 
 LeafEmitter::~LeafEmitter() = default;
 
-const LeafRegion& LeafEmitter::region(int32_t q) {
-  const LeafRegion& region = regions_.build(q);
+void LeafEmitter::emitAll(std::vector<std::array<uint32_t, 4>>& out) {
+  eastAndNorth_.resize(built_.tree.quadrants.size());
+  inOrder_ = true;
+  built_.tree.forEachLeafWithAdjacent([&](int32_t q, const std::array<int32_t, 4>& adjacent) { emit(q, &adjacent, out); });
+  inOrder_ = false;
+}
+
+uint32_t LeafEmitter::newPoint(const Vec2& at, bool listed) {
+  const uint32_t id = listed ? ids_->addNew(at) : ids_->addUnlisted();
+  vertices_.push_back(built_.frame.toPlane(at));
+  return id;
+}
+
+namespace {
+
+// Which of a leaf's recorded east and north positions (LeafEmitter::eastAndNorth_) point p is,
+// or -1.
+int eastOrNorthPosition(const Quadtree& tree, const Quadrant& leaf, const Vec2& p) {
+  const double s = static_cast<double>(tree.edgeLength(leaf));
+  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
+  if (p.x == x1) return p.y == y0 ? 0 : p.y == y0 + s / 2 ? 1 : p.y == y1 ? 2 : -1;
+  if (p.y == y1) return p.x == x0 ? 4 : p.x == x0 + s / 2 ? 3 : -1;
+  return -1;
+}
+
+}  // namespace
+
+uint32_t LeafEmitter::recordedBy(int32_t m, const Vec2& at) const {
+  const Quadrant& leaf = built_.tree[m];
+  if (leaf.status == QuadStatus::Outside) return Mesh::kNone;
+  const int position = eastOrNorthPosition(built_.tree, leaf, at);
+  return position < 0 ? Mesh::kNone : eastAndNorth_[static_cast<size_t>(m)][static_cast<size_t>(position)];
+}
+
+uint32_t LeafEmitter::earlierId(int32_t q, const LeafRegion& region, const Vec2& at) const {
+  // The leaves across first (the region found them), then the table, then every leaf around the
+  // point that came earlier (a corner shared only across a diagonal, a neighbour Outside).
+  const Quadtree& tree = built_.tree;
+  if (at.x == static_cast<double>(tree[q].x))
+    for (int32_t n : region.westLeaves)
+      if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
+  if (at.y == static_cast<double>(tree[q].y))
+    for (int32_t n : region.southLeaves)
+      if (const uint32_t id = recordedBy(n, at); id != Mesh::kNone) return id;
+  if (const uint32_t id = ids_->find(at); id != Mesh::kNone) return id;
+  const Quadrant& leaf = tree[q];
+  const double s = static_cast<double>(tree.edgeLength(leaf)), root = static_cast<double>(tree.edgeLength(tree[0]));
+  for (int k = 0; k < 4; ++k) {
+    const Vec2 probe = at + Vec2{k & 1 ? 0.25 : -0.25, k & 2 ? 0.25 : -0.25};  // leaves are 1 unit or more
+    const bool inLeaf = probe.x >= static_cast<double>(leaf.x) && probe.x < static_cast<double>(leaf.x) + s &&
+                        probe.y >= static_cast<double>(leaf.y) && probe.y < static_cast<double>(leaf.y) + s;
+    if (inLeaf || probe.x < 0 || probe.y < 0 || probe.x >= root || probe.y >= root) continue;
+    const int32_t m = tree.leafAt(probe);
+    if (m < 0 || m == q || !comesBefore(tree[m], leaf)) continue;
+    if (const uint32_t id = recordedBy(m, at); id != Mesh::kNone) return id;
+  }
+  return Mesh::kNone;
+}
+
+void LeafEmitter::recordEastAndNorth(int32_t q) {
+  const Quadrant& leaf = built_.tree[q];
+  auto& ids = eastAndNorth_[static_cast<size_t>(q)];
+  ids.fill(Mesh::kNone);
+  for (size_t i = 0; i < ring_.size(); ++i) {
+    const int position = eastOrNorthPosition(built_.tree, leaf, ring_[i]);
+    if (position >= 0) ids[static_cast<size_t>(position)] = ringIds_[i];
+  }
+}
+
+const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* adjacent) {
+  const LeafRegion& region = regions_.build(q, adjacent);
   ring_.clear();
   ringIds_.clear();
+  const Quadtree& tree = built_.tree;
+  const Quadrant& leaf = tree[q];
+  const double s = static_cast<double>(tree.edgeLength(leaf));
+  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
   bool added;
   for (const RegionPoint& p : region.ring) {
-    uint32_t id;
+    uint32_t id = Mesh::kNone;
     if (p.inputVertex >= 0) {
       id = inputToMesh_[static_cast<size_t>(p.inputVertex)];
-    } else {
+    } else if (!inOrder_) {
       id = ids_->findOrAdd(p.at, added);
       if (added) vertices_.push_back(built_.frame.toPlane(p.at));
+    } else if ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0)) {
+      // New (see inOrder_), unless it is the leaf's input vertex or this ring had it already
+      // (a template's ring is known to be free of both).
+      if (leaf.vertex >= 0 && p.at == tree.input.vertices[static_cast<size_t>(leaf.vertex)])
+        id = inputToMesh_[static_cast<size_t>(leaf.vertex)];
+      if (region.templateKey < 0)
+        for (size_t i = 0; i < ring_.size() && id == Mesh::kNone; ++i)
+          if (ring_[i] == p.at) id = ringIds_[i];
+      // A point at a recorded position is found there; any other one goes in the table.
+      if (id == Mesh::kNone) id = newPoint(p.at, eastOrNorthPosition(tree, leaf, p.at) < 0);
+    } else {
+      id = earlierId(q, region, p.at);
+      if (id == Mesh::kNone) id = newPoint(p.at, true);
     }
     ringIds_.push_back(id);
     // Shapes are judged in tree coordinates, where points on one grid line are exactly in line;
     // plane coordinates far from the origin would blur a straight corner into a convex one.
     ring_.push_back(p.at);
   }
+  if (inOrder_ && leaf.status != QuadStatus::Outside) recordEastAndNorth(q);
   return region;
 }
 
@@ -144,8 +258,10 @@ const std::vector<uint32_t>& LeafEmitter::ringIds(int32_t q) {
   return ringIds_;
 }
 
-void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
-  const LeafRegion& leaf = region(q);
+void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) { emit(q, nullptr, out); }
+
+void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::vector<std::array<uint32_t, 4>>& out) {
+  const LeafRegion& leaf = region(q, adjacent);
   if (leaf.ring.empty()) return;
   const Vec2 inner = leaf.inner;
   const size_t n = ring_.size();
@@ -165,9 +281,14 @@ void LeafEmitter::emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out) {
   }
   // Ring points have their ids; the inner point and points added on the boundary are this
   // leaf's own (a template's indices are the ring's, then the inner point).
+  uint32_t innerId = Mesh::kNone;  // a template's inner point, in tree order: new, once
   auto idOf = [&](uint32_t index) {
     const int ringIndex = fromTemplate ? (index < n ? static_cast<int>(index) : -1) : subdomains_.ringIndexOf(index);
     if (ringIndex >= 0) return ringIds_[static_cast<size_t>(ringIndex)];
+    if (fromTemplate && inOrder_) {
+      if (innerId == Mesh::kNone) innerId = newPoint(inner, false);
+      return innerId;
+    }
     const Vec2 at = fromTemplate ? inner : subdomains_.points()[index];
     bool added;
     const uint32_t id = ids_->findOrAdd(at, added);

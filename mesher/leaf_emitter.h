@@ -28,6 +28,10 @@ class LeafEmitter {
   // Appends leaf q's elements to `out` (corner ids, counter-clockwise, [3] = 0xffffffff for
   // triangles) and any new vertex to vertices(). Outside leaves add nothing.
   void emit(int32_t q, std::vector<std::array<uint32_t, 4>>& out);
+  // emit() for every leaf of the tree in tree order (Quadtree::leaves), right after
+  // construction or reset(): the same elements and vertices, found mostly without the point
+  // table (see inOrder_). The emitter is then fit for emit() again.
+  void emitAll(std::vector<std::array<uint32_t, 4>>& out);
   // The vertex ids around leaf q's region, as emit() would use them: equal rings give equal
   // elements. lastRingIds() is the ring of the last emit() or ringIds() call.
   const std::vector<uint32_t>& ringIds(int32_t q);
@@ -42,7 +46,14 @@ class LeafEmitter {
   void swapVertices(std::vector<Vec2>& other) { vertices_.swap(other); }
 
  private:
-  const LeafRegion& region(int32_t q);
+  const LeafRegion& region(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
+  void emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::vector<std::array<uint32_t, 4>>& out);
+  uint32_t newPoint(const Vec2& at, bool listed);
+  // In tree order: the id leaf m recorded at point `at` of its east or north side, and the id a
+  // leaf before q gave point `at` of q's west or south side; kNone when there is none.
+  uint32_t recordedBy(int32_t m, const Vec2& at) const;
+  uint32_t earlierId(int32_t q, const LeafRegion& region, const Vec2& at) const;
+  void recordEastAndNorth(int32_t q);
 
   const PolygonTree& built_;
   std::unique_ptr<PointIds> ids_;
@@ -57,6 +68,17 @@ class LeafEmitter {
   // templates of 5.3) are worked out once per pattern.
   std::array<std::vector<RingElement>, 16> templates_;
   std::array<bool, 16> haveTemplate_{};
+  // Set by emitAll. Leaves then come in tree (Morton) order, in which every leaf touching a
+  // point on a leaf's east or north side, other than its south-east and north-west corners,
+  // comes later: such a point is new there, unless it is an input vertex. A new point at one of
+  // the positions eastAndNorth_ records is found there later, by the leaves across or around
+  // it that came earlier, and stays out of the point table; so does an interior square's inner
+  // point, which no other leaf touches. Everything else is listed as before.
+  bool inOrder_ = false;
+  // Per quadrant, the ids on its east and north sides: south-east corner, east midpoint,
+  // north-east corner, north midpoint, north-west corner (0xffffffff: none there). Written for
+  // every leaf emitAll meets that is not Outside, read only for such leaves it has passed.
+  std::vector<std::array<uint32_t, 5>> eastAndNorth_;
 };
 
 }  // namespace mesher

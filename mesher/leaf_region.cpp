@@ -55,6 +55,9 @@ Vec2 onSideLine(Vec2 a, Vec2 b, int side, double x0, double y0, double x1, doubl
   return {snapToGrid(std::clamp(x, x0, x1), snap), line};
 }
 
+// The template key's bit for each side, in Side order (West, East, South, North).
+constexpr int kTemplateBit[4] = {1, 2, 4, 8};
+
 // The template key of an interior square's border points: the sides holding exactly their
 // midpoint, or -1 when some side holds anything else (an unbalanced neighbour).
 int midpointSides(const std::vector<RegionPoint>& points, double x0, double y0, double s) {
@@ -75,13 +78,15 @@ int midpointSides(const std::vector<RegionPoint>& points, double x0, double y0, 
 
 }  // namespace
 
-const LeafRegion& LeafRegionBuilder::build(int32_t q) {
+const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 4>* adjacent) {
   const Quadtree& tree = tree_;
   LeafRegion& region = region_;
   region.ring.clear();
   region.hinge = -1;
   region.pathPoints = 0;
   region.templateKey = -1;
+  region.westLeaves.clear();
+  region.southLeaves.clear();
   const Quadrant& leaf = tree[q];
   if (leaf.status == QuadStatus::Outside) return region;
   const double s = static_cast<double>(tree.edgeLength(leaf));
@@ -91,16 +96,37 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
   const QuadtreeInput& in = tree.input;
 
   // Every point of the border that is a mesh vertex: corners, finer neighbours' corners, the
-  // leaf's vertex when it lies on the border.
+  // leaf's vertex when it lies on the border. Points are written in place: built aside and
+  // copied in, they stalled on every copy.
   std::vector<RegionPoint>& onBorder = onBorder_;
-  onBorder.assign({{{x0, y0}}, {{x1, y0}}, {{x1, y1}}, {{x0, y1}}});
+  onBorder.resize(4);
+  const double corners[4][2] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  for (size_t k = 0; k < 4; ++k) {
+    onBorder[k].at.x = corners[k][0];
+    onBorder[k].at.y = corners[k][1];
+    onBorder[k].inputVertex = -1;
+  }
+  // An interior square whose finer neighbours are all one level finer (the usual case once
+  // balanced) has only side midpoints besides its corners: those sides are noted, as bits of the
+  // template key, instead of sorting points.
+  const bool square = leaf.edgeCount == 0 && leaf.vertex < 0 && leaf.status == QuadStatus::Inside;
+  int midpoints = 0;
+  bool deeper = false;  // some finer neighbour is more than one level finer
   std::vector<int32_t>& across = across_;
   for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
     across.clear();
-    tree.neighbors(q, side, across);
+    if (adjacent) tree.leavesFacing((*adjacent)[static_cast<size_t>(side)], side, across);
+    else tree.neighbors(q, side, across);
+    if (side == Side::West) region.westLeaves.assign(across.begin(), across.end());
+    if (side == Side::South) region.southLeaves.assign(across.begin(), across.end());
     for (int32_t n : across) {
       const Quadrant& other = tree[n];
       if (other.level <= leaf.level || other.status == QuadStatus::Outside) continue;
+      if (square && other.level == leaf.level + 1) {
+        midpoints |= kTemplateBit[static_cast<size_t>(side)];
+        continue;
+      }
+      deeper = true;
       const double ns = static_cast<double>(tree.edgeLength(other));
       const bool vertical = side == Side::West || side == Side::East;
       const Vec2 a = vertical ? Vec2{side == Side::West ? x0 : x1, static_cast<double>(other.y)}
@@ -110,6 +136,30 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q) {
         if (vertical ? (p.y > y0 && p.y < y1) : (p.x > x0 && p.x < x1)) onBorder.push_back({p});
       }
     }
+  }
+  if (square && !deeper) {
+    // The ring sorting would give: corners counter-clockwise from the lower-left, each side's
+    // midpoint after the corner it starts at.
+    static constexpr int kSideAfterCorner[4] = {4, 2, 8, 1};  // south, east, north, west
+    const double midpointAfter[4][2] = {{x0 + s / 2, y0}, {x1, y0 + s / 2}, {x0 + s / 2, y1}, {x0, y0 + s / 2}};
+    region.ring.clear();
+    for (size_t k = 0; k < 4; ++k) {
+      region.ring.push_back(onBorder[k]);
+      if (midpoints & kSideAfterCorner[k]) {
+        RegionPoint& mid = region.ring.emplace_back();
+        mid.at.x = midpointAfter[k][0];
+        mid.at.y = midpointAfter[k][1];
+      }
+    }
+    region.templateKey = midpoints;
+    region.inner = {x0 + s / 2, y0 + s / 2};
+    return region;
+  }
+  // Otherwise the noted midpoints join the sort.
+  for (size_t side = 0; side < 4; ++side) {
+    if (!(midpoints & kTemplateBit[side])) continue;
+    RegionPoint& mid = onBorder.emplace_back();
+    mid.at = side == 0 ? Vec2{x0, y0 + s / 2} : side == 1 ? Vec2{x1, y0 + s / 2} : side == 2 ? Vec2{x0 + s / 2, y0} : Vec2{x0 + s / 2, y1};
   }
   const bool vertexOnBorder = leaf.vertex >= 0 && [&] {
     const Vec2 v = in.vertices[static_cast<size_t>(leaf.vertex)];

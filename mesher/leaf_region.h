@@ -4,6 +4,7 @@
 
 #include "mesher/quadtree.h"
 
+#include <array>
 #include <vector>
 
 namespace mesher {
@@ -26,6 +27,8 @@ struct LeafRegion {
   // A point its elements may share inside the leaf: the centre of a whole square, else the
   // region's centroid. Only this leaf can use it, so it cannot make a T-vertex.
   Vec2 inner{0};
+  // The leaves across the west and south sides (any status), as Quadtree::neighbors lists them.
+  std::vector<int32_t> westLeaves, southLeaves;
 };
 
 // Builds the region of leaf q: its corners and the T-vertices of finer neighbours on the inside
@@ -36,7 +39,8 @@ struct LeafRegion {
 class LeafRegionBuilder {
  public:
   explicit LeafRegionBuilder(const Quadtree& tree) : tree_(tree) {}
-  const LeafRegion& build(int32_t q);
+  // `adjacent`, when given, is tree.adjacent(q, side) for West, East, South, North.
+  const LeafRegion& build(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
 
  private:
   const Quadtree& tree_;

@@ -20,7 +20,6 @@ Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) 
 
 struct Mesher::State {
   PolygonTree built;
-  std::vector<int32_t> leaves;
   std::optional<LeafEmitter> emitter;  // bound to `built`, made on first use
   std::optional<QualityRefiner> refiner;  // the same
 };
@@ -43,12 +42,19 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   if (!s.refiner) s.refiner.emplace(s.built);
   s.refiner->refine();
   s.built.tree.changes.clear();
-  s.built.tree.leaves(s.leaves);
-  if (s.emitter) s.emitter->reset(polygon, s.leaves.size());
-  else s.emitter.emplace(polygon, s.built, s.leaves.size());
+  // Every node has four children (nothing was merged): a quarter of the rest are nodes.
+  const size_t leaves = (3 * s.built.tree.quadrants.size() + 1) / 4;
+  if (!s.emitter) {
+    s.emitter.emplace(polygon, s.built, leaves);
+  } else {
+    // The emitter fills the vertex memory `out` had (it handed over the last polygon's): a
+    // second buffer of its own would be fresh pages once more.
+    s.emitter->swapVertices(out.vertices);
+    s.emitter->reset(polygon, leaves);
+  }
   out.elements.clear();
-  out.elements.reserve(s.leaves.size() * 2);
-  for (int32_t q : s.leaves) s.emitter->emit(q, out.elements);
+  out.elements.reserve(leaves * 2);
+  s.emitter->emitAll(out.elements);
   s.emitter->swapVertices(out.vertices);
 }
 

@@ -72,13 +72,15 @@ void Quadtree::addChildren(int32_t q) {
   const auto first = static_cast<int32_t>(quadrants.size());
   const Quadrant parent = quadrants[static_cast<size_t>(q)];
   const int64_t half = edgeLength(parent) / 2;
+  // Written in place: a child built aside and copied in was stored field by field and read back
+  // whole, which stalled on every copy.
+  quadrants.resize(quadrants.size() + 4);
   for (int c = 0; c < 4; ++c) {
-    Quadrant child;
+    Quadrant& child = quadrants[static_cast<size_t>(first + c)];
     child.x = parent.x + (c & 1 ? half : 0);
     child.y = parent.y + (c & 2 ? half : 0);
-    child.level = parent.level + 1;
+    child.level = static_cast<uint8_t>(parent.level + 1);
     child.parent = q;
-    quadrants.push_back(child);
   }
   Quadrant& node = quadrants[static_cast<size_t>(q)];
   node.firstChild = first;
@@ -337,6 +339,18 @@ void Quadtree::leaves(std::vector<int32_t>& out) const {
   }
 }
 
+void Quadtree::vertexLeaves(std::vector<int32_t>& out) const {
+  // From each vertex down to the leaves holding it, instead of a walk through every leaf.
+  out.clear();
+  for (const Vec2& p : input.vertices)
+    descend(*this, 0, [&](int32_t q) { return holdsPoint(q, p); }, [&](int32_t q) {
+      if ((*this)[q].vertex >= 0) out.push_back(q);
+      return Visit::Done;
+    });
+  std::sort(out.begin(), out.end(), [&](int32_t a, int32_t b) { return comesBefore((*this)[a], (*this)[b]); });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 void Quadtree::leavesBelow(int32_t q, std::vector<int32_t>& out) const {
   const Quadrant& quad = quadrants[static_cast<size_t>(q)];
   if (quad.isLeaf()) {
@@ -347,7 +361,7 @@ void Quadtree::leavesBelow(int32_t q, std::vector<int32_t>& out) const {
 }
 
 int32_t Quadtree::leafAt(Vec2 p) const {
-  const double root = std::exp2(maxDepth);
+  const auto root = static_cast<double>(int64_t{1} << maxDepth);  // exact: maxDepth is at most kDeepestTree
   if (!(p.x >= 0 && p.y >= 0 && p.x < root && p.y < root)) return -1;
   int32_t q = 0;
   while (!quadrants[static_cast<size_t>(q)].isLeaf()) {
@@ -375,8 +389,9 @@ int32_t Quadtree::adjacent(int32_t q, Side side) const {
   return (*this)[across].firstChild + (child ^ bit);
 }
 
-void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const {
-  const int32_t r = adjacent(q, side);
+void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const { leavesFacing(adjacent(q, side), side, out); }
+
+void Quadtree::leavesFacing(int32_t r, Side side, std::vector<int32_t>& out) const {
   if (r < 0) return;
   // A leaf there is the one neighbour; otherwise its leaves along the facing side, found in
   // `out` itself (no allocation): a node is replaced by its first facing child and the second is

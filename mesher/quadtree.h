@@ -61,6 +61,8 @@ class Quadtree {
   // Leaves only, in tree order (into `out`, replacing what it held).
   std::vector<int32_t> leaves() const;
   void leaves(std::vector<int32_t>& out) const;
+  // The leaves holding an input vertex (in their closed square), in tree order, into `out`.
+  void vertexLeaves(std::vector<int32_t>& out) const;
   // The leaves below quadrant q (q itself when it is a leaf), in tree order, appended to `out`;
   // a split may have gone deeper than one level where a child broke a storage rule.
   void leavesBelow(int32_t q, std::vector<int32_t>& out) const;
@@ -72,6 +74,14 @@ class Quadtree {
   // The quadrant across `side` of quadrant q at q's level, or the coarser leaf there; -1 at the
   // root's border. Constant time on average (Samet's neighbour finding).
   int32_t adjacent(int32_t q, Side side) const;
+  // The second half of neighbors(q, side, out) once r = adjacent(q, side) is known: r when it is
+  // a leaf (or -1: nothing), else its leaves along the side facing q, appended to `out`.
+  void leavesFacing(int32_t r, Side side, std::vector<int32_t>& out) const;
+  // Calls visit(q, adjacent) for every leaf q in tree order (as leaves() lists them), with
+  // adjacent[side] = adjacent(q, side) for West, East, South, North: handed down from parent to
+  // children in constant time each, instead of climbing from every leaf.
+  template <typename Visit>
+  void forEachLeafWithAdjacent(Visit visit) const;
   // Whether point p of leaf q's closed square lies inside the polygon, from the leaf's own
   // vertex and edges (its status when it holds none). p must not lie on a stored edge.
   bool insideAt(int32_t q, Vec2 p) const;
@@ -120,6 +130,14 @@ class Quadtree {
   void edgesThrough(int32_t q, std::vector<uint32_t>& out) const;
 };
 
+// Whether leaf a comes before leaf b in tree order: the Morton order of their lower-left
+// corners, y above x at each level as the children SW, SE, NW, NE are numbered.
+inline bool comesBefore(const Quadrant& a, const Quadrant& b) {
+  const auto dx = static_cast<uint64_t>(a.x ^ b.x), dy = static_cast<uint64_t>(a.y ^ b.y);
+  const bool xDecides = dy < dx && dy < (dy ^ dx);  // the highest differing bit is x's
+  return xDecides ? a.x < b.x : a.y < b.y;
+}
+
 // A plane point in tree coordinates: within the root square, snapped onto grid lines it lies
 // within frame.gridSnap of.
 Vec2 treePoint(const TreeFrame& frame, Vec2 plane);
@@ -157,5 +175,38 @@ constexpr int kDeepestTree = 50;
 // True when segment a-b passes through the open square [x0, x1] x [y0, y1] (touching its border
 // only does not count).
 bool segmentCrossesOpenSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1);
+
+template <typename Visit>
+void Quadtree::forEachLeafWithAdjacent(Visit visit) const {
+  struct Pending {
+    int32_t q;
+    std::array<int32_t, 4> adjacent;
+  };
+  // Depth first, children pushed NE to SW: at most three waiting per level of the path, plus four.
+  std::array<Pending, 3 * kDeepestTree + 8> stack;
+  size_t size = 0;
+  stack[size++] = {0, {-1, -1, -1, -1}};
+  while (size > 0) {
+    const Pending at = stack[--size];
+    const Quadrant& node = (*this)[at.q];
+    if (node.isLeaf()) {
+      visit(at.q, at.adjacent);
+      continue;
+    }
+    // As adjacent() finds them: a sibling on the inner sides, else the parent's neighbour or its
+    // mirrored child (children SW 0, SE 1, NW 2, NE 3: bit 0 is east, bit 1 north).
+    auto across = [&](int32_t parentSide, int child, int bit) {
+      if (parentSide < 0 || (*this)[parentSide].isLeaf()) return parentSide;
+      return (*this)[parentSide].firstChild + (child ^ bit);
+    };
+    for (int c = 3; c >= 0; --c) {
+      const int32_t first = node.firstChild;
+      const bool east = c & 1, north = c & 2;
+      stack[size++] = {first + c,
+                       {east ? first + (c ^ 1) : across(at.adjacent[0], c, 1), east ? across(at.adjacent[1], c, 1) : first + (c ^ 1),
+                        north ? first + (c ^ 2) : across(at.adjacent[2], c, 2), north ? across(at.adjacent[3], c, 2) : first + (c ^ 2)}};
+    }
+  }
+}
 
 }  // namespace mesher

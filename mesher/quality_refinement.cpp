@@ -36,7 +36,10 @@ size_t QualityRefiner::refine() {
   Quadtree& tree = built_.tree;
   size_t splits = 0;
   seeds_.clear();
-  tree.leaves(leaves_);
+  // The vertex leaves, in tree order: found from the vertices down in a tree large beside them,
+  // by a walk through the leaves in a small one.
+  if (tree.input.vertices.size() * 256 < tree.quadrants.size()) tree.vertexLeaves(leaves_);
+  else tree.leaves(leaves_);
   for (int32_t q : leaves_) {
     if (tree[q].vertex < 0 || !nearASide(tree, q) || reachesBound(q)) continue;
     // The vertex's leaf is split until it reaches the bound, a few levels at most; splits that

@@ -1,6 +1,7 @@
 // The whole of chapter 5: meshes tile their polygon exactly, conform, keep every input vertex.
 #include "mesher/mesher.h"
 
+#include "mesher/adaptive_mesh.h"
 #include "mesher/mesh_check.h"
 
 #include "tests/mesher/mesh_expectations.h"
@@ -145,6 +146,20 @@ TEST(Mesher, ReusedForManyPolygonsGivesWhatFreshMeshingGives) {
     mesher.mesh(polygon, {patch}, overwritten);
     EXPECT_EQ(overwritten.vertices, fresh.vertices);
     EXPECT_EQ(overwritten.elements, fresh.elements);
+  }
+}
+
+// A whole mesh welds its vertices in tree order, mostly without the point table; an adaptive
+// mesh's leaf-by-leaf emission looks every point up there. Both give the same mesh.
+TEST(Mesher, TreeOrderWeldingGivesWhatThePointTableGives) {
+  std::mt19937 random(11);
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE(trial);
+    const PolygonWithHoles polygon = trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial);
+    const double patch = 2 + trial % 13;
+    const Mesh whole = meshPolygon(polygon, {patch}), leafByLeaf = AdaptiveMesh(polygon, {patch}).snapshot();
+    EXPECT_EQ(whole.vertices, leafByLeaf.vertices);
+    EXPECT_EQ(whole.elements, leafByLeaf.elements);
   }
 }
 
