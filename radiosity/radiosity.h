@@ -73,6 +73,10 @@ struct SolverSettings {
   // unshotFraction() (a sum of magnitudes) larger than the ledgers' signed unshot term
   // (unshotPower()) until it is filled; the application turns it on.
   bool overshoot = false;
+  // After an edit, a patch that did not change corrects its light in the window of its
+  // hemisphere where the changed elements are seen (Solver::edit): about the cost of what
+  // changed. Off: every correction takes back and sends again all of the patch's light.
+  bool windowedCorrections = true;
 };
 
 // Counters since construction. Powers are per channel (see the units above).
@@ -86,6 +90,7 @@ struct Stats {
   uint64_t movedShooters = 0;      // one-element patches whose centre was inside a solid
   uint64_t renormalisedShots = 0;  // shots whose corrections were too big for the rest to absorb
   uint64_t corrections = 0;        // patches whose light was taken back after an edit (Solver::edit)
+  uint64_t windowedCorrections = 0;  // of those, corrected in a window of their hemisphere only
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area
   glm::dvec3 absorbedPower{0};     // absorbed by the front of elements, (1 - rho) of what arrives
@@ -184,6 +189,10 @@ class Solver {
   struct Edit;
   // One take-back (edit()); false when none is pending.
   bool correct();
+  // The take-back of patch p (of the geometry before the edit) as a difference in a window of
+  // its hemisphere, when it did not change and the window is worth it; false (and nothing done)
+  // otherwise.
+  bool correctInWindow(uint32_t p);
   std::unique_ptr<State> state_;
   std::unique_ptr<Edit> edit_;
 };
