@@ -878,6 +878,9 @@ bool Solver::correct() {
     if (i == kNone) now.stats.removedPower += kPi * S * before.area[j];
     else from.push_back(i);
   }
+  // The frame of the last point chosen is still the renderer's: it is that patch's shot frame.
+  uint32_t lastChosen = kNone;
+  const pxpl5::HemisphereFrame* lastFrame = nullptr;
   for (bool settled = false; !settled;) {
     patches.clear();
     for (uint32_t i : from) patches.push_back(now.patchOf[i]);
@@ -885,7 +888,7 @@ bool Solver::correct() {
     patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
     settled = true;
     for (uint32_t q : patches)
-      if (!now.pointChosen[q]) now.choosePoint(q), settled = false;
+      if (!now.pointChosen[q]) lastFrame = now.choosePoint(q), lastChosen = q, settled = false;
   }
   std::sort(from.begin(), from.end());
   for (uint32_t q : patches) {
@@ -899,7 +902,9 @@ bool Solver::correct() {
     const glm::dvec3 dB = S * (carrying / now.patchArea[q]);
     lightPatchTree(now.trees[q], now.shares, now.nodeLight);
     const double area = now.patchArea[q];
-    const glm::dvec3 out = now.distribute(q, nullptr, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) {
+    const pxpl5::HemisphereFrame* chosen = q == lastChosen && now.pointChosen[q] ? lastFrame : nullptr;
+    lastChosen = kNone;  // any other patch renders a frame of its own
+    const glm::dvec3 out = now.distribute(q, chosen, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) {
       now.receive(j, area, dB, front, behind);
     });
     now.stats.escapedPower += kPi * dB * area * out;
