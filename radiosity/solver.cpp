@@ -111,6 +111,13 @@ struct Solver::State {
   // The share of backs the centre saw when choosePoint kept it, else NaN: a window correction
   // updates it by what changed in its window (Solver::correctInWindow).
   std::vector<double> pointBackShare;
+  // The energy scales of patch p's last frame (distribute): of its pixel factors, of its judged
+  // ones. A window correction, which sees part of a frame, applies them to its differences.
+  struct FrameScale {
+    glm::dvec3 pixels{1}, judged{1};
+  };
+  std::vector<FrameScale> patchScale;
+  FrameScale lastScale;  // of the last distribute
   std::vector<PatchTree> trees;      // over each patch's elements, in patchElements' order
 
   std::vector<glm::vec3> soupVertices;
@@ -171,12 +178,13 @@ struct Solver::State {
   // Radiance dB sent from `sourceArea` reaching element j with these factors: the reflected part
   // into j's radiance, its unshot light and its patch's, the rest into the power ledgers.
   void receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front, const glm::dvec3& back);
-  // The factors distribute would give `elements` (not patch p's own) from p's frame before the
-  // energy is kept (its scale): judged ones' new factors, the others' pixel factors (with a
-  // windowed frame, those of the window's pixels), in the order given; zero factors left out.
+  // The factors distribute would give `elements` (not patch p's own) from p's frame, its energy
+  // kept by `scale` (distribute's, which depends on the whole frame): judged ones' new factors,
+  // the others' pixel factors (with a windowed frame, those of the window's pixels), in the
+  // order given; zero factors left out.
   // p's tree must be lit. For corrections that deposit differences (windowed_correction.h).
   void listedFactors(uint32_t p, const pxpl5::HemisphereFrame& frame, std::span<const uint32_t> elements,
-                     std::vector<NewFactor>& out);
+                     const FrameScale& scale, std::vector<NewFactor>& out);
   // Patch p's spheres and its elements' for windowed_correction.h.
   SceneSpheres spheres() const {
     return {centre, radius, surfaceOf, patchCentre, patchRadius, patchFirst, patchLast, patchElements};
@@ -263,6 +271,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
     for (auto* v : {&patchArea, &patchRadius}) v->emplace_back();
     pointChosen.emplace_back();
     pointBackShare.emplace_back();
+    patchScale.emplace_back();
     trees.emplace_back();
   }
   patchFirst[p] = first;
@@ -293,6 +302,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   unshot[p] = light / a;
   pointChosen[p] = 0;
   pointBackShare[p] = std::numeric_limits<double>::quiet_NaN();
+  patchScale[p] = {};
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
   trees[p] = buildPatchTree(own, receiver, axes.x, axes.y);
 }
@@ -469,6 +479,7 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
     receive(j, patchArea[p], dB, front, back);
   });
   stats.escapedPower += kPi * dB * patchArea[p] * escaped;
+  patchScale[p] = lastScale;
 }
 
 void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front,
@@ -484,7 +495,7 @@ void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB,
 }
 
 void Solver::State::listedFactors(uint32_t p, const pxpl5::HemisphereFrame& frame, std::span<const uint32_t> elements,
-                                  std::vector<NewFactor>& out) {
+                                  const FrameScale& scale, std::vector<NewFactor>& out) {
   const glm::dvec3 eye = patchCentre[p];
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
   for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = f.factor;
@@ -504,11 +515,11 @@ void Solver::State::listedFactors(uint32_t p, const pxpl5::HemisphereFrame& fram
       if (!judged.factors.empty()) {
         replaced[j] = 0;
         const NewFactor& f = judged.factors.front();
-        if (f.front != glm::dvec3(0) || f.back != glm::dvec3(0)) list.push_back(f);
+        if (f.front != glm::dvec3(0) || f.back != glm::dvec3(0)) list.push_back({j, f.front * scale.judged, f.back * scale.judged});
         continue;
       }
       if (pixelFactor[j] == 0) continue;
-      const glm::dvec3 factor(pixelFactor[j]);
+      const glm::dvec3 factor = pixelFactor[j] * scale.pixels;
       if (glm::dot(normal[j], eye) > offset[j]) list.push_back({j, factor, glm::dvec3(0)});
       else list.push_back({j, glm::dvec3(0), factor});
     }
@@ -569,6 +580,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
     }
   }
   stats.renormalisedShots += renormalised;
+  lastScale = {scale, newScale};
   for (ReceiverChunk& chunk : chunks)
     for (NewFactor& f : chunk.factors) f.front *= newScale, f.back *= newScale;
 
@@ -811,6 +823,7 @@ void Solver::edit(std::span<const Surface> surfaces) {
     n.patchCentre[q] = old.patchCentre[p];
     n.patchRadius[q] = old.patchRadius[p];
     n.pointBackShare[q] = old.pointBackShare[p];
+    n.patchScale[q] = old.patchScale[p];
   }
   // The new patches' unshot and shot light from their elements.
   for (uint32_t q = 0; q < n.unshot.size(); ++q) {
@@ -908,6 +921,7 @@ bool Solver::correct() {
       now.receive(j, area, dB, front, behind);
     });
     now.stats.escapedPower += kPi * dB * area * out;
+    now.patchScale[q] = now.lastScale;
     now.shot[q] += dB;
   }
   ++now.stats.corrections;
@@ -1083,8 +1097,11 @@ bool Solver::correctInWindow(uint32_t p) {
     for (uint32_t k : s->elementsOf(patch)) s->shares.push_back(s->area[k] / area * glm::dvec3(1));
     lightPatchTree(s->trees[patch], s->shares, s->nodeLight);
   }
-  before.listedFactors(p, frameBefore, judgedBefore, e.factors[0]);
-  now.listedFactors(q, frameNow, judgedNow, e.factors[1]);
+  // The scales of p's last whole frame, for both: the window changes them by the change of its
+  // judged receivers' corrections only.
+  before.listedFactors(p, frameBefore, judgedBefore, before.patchScale[p], e.factors[0]);
+  now.listedFactors(q, frameNow, judgedNow, before.patchScale[p], e.factors[1]);
+  now.patchScale[q] = before.patchScale[p];
 
   // Now less before; what fell on removed elements comes off their ledger.
   glm::dvec3 arrived{0};
