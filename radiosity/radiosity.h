@@ -169,7 +169,9 @@ class Solver {
   // their emission. Nothing is restarted (after Chen 1990, "Incremental radiosity"): every patch
   // that has shot and may see what changed has its light taken back along the old geometry's
   // factors (negative light where it fell) and returned to its elements as unshot light, which
-  // shooting then sends along the new geometry's, so the difference is what moves. Take-backs
+  // shooting then sends along the new geometry's, so the difference is what moves. A patch that
+  // did not change sends only that difference, from frames of the part of its hemisphere where
+  // the changed elements are seen (SolverSettings::windowedCorrections). Take-backs
   // come first in step(), the most powerful first; until done, the share of a patch's light
   // that can reach the changed elements counts as unshot. Take-backs left from an earlier edit
   // are done first (here). Throws std::invalid_argument for another number of surfaces, or as
