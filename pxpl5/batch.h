@@ -44,6 +44,7 @@ struct SetupPrimitive {
 // primitives and, per region, which of them touch it (in emission order, so the caller's order).
 struct Emitter::Batch {
   const Screen* screen = nullptr;
+  PixelRect clip;  // the frame's window within the screen: primitives are clipped to it
   std::vector<SetupPrimitive> primitives;
   std::vector<LinearExpression> linear;
   std::vector<Expression> quadratic;

@@ -149,6 +149,10 @@ const HemisphereSettings& HemisphereRenderer::settings() const { return state_->
 const FrameCounters& HemisphereRenderer::counters() const { return state_->machine.counters(); }
 
 const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const PolygonSoup& soup) {
+  return render(view, soup, {0, 0, state_->frame.width, state_->frame.height});
+}
+
+const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const PolygonSoup& soup, PixelRect window) {
   State& st = *state_;
   validate(soup);
   if (!(glm::length(view.normal) > 0)) throw std::invalid_argument("pxpl5: the viewpoint's normal is zero");
@@ -184,7 +188,7 @@ const HemisphereFrame& HemisphereRenderer::render(const Viewpoint& view, const P
     }
   };
   st.machine.renderFrame(
-      soup.polygons.size(),
+      window, soup.polygons.size(),
       [&](size_t begin, size_t end, Emitter& out) {
         if (hemisphere && reference)
           setupHemisphereReference(input, begin, end, out);

@@ -89,6 +89,13 @@ class HemisphereRenderer {
   // comes first. Buffers are reused from frame to frame. Throws std::invalid_argument, naming
   // the polygon, for a vertex range outside `vertices` or a vertex count outside 3..24.
   const HemisphereFrame& render(const Viewpoint& view, const PolygonSoup& soup);
+  // The same frame within `window` only (pixels of HemisphereFrame's image; clipped to it): the
+  // items inside are the ones the whole frame would have, and factors and total sum the weights
+  // of those pixels alone. The items outside are left as earlier frames made them: meaningless
+  // for this one. Polygons wholly outside the window are not sent to the renderers. Two frames
+  // of one viewpoint that differ only by polygons inside a window are compared that way at the
+  // cost of the window.
+  const HemisphereFrame& render(const Viewpoint& view, const PolygonSoup& soup, PixelRect window);
 
   // The machine's counters for the last frame.
   const FrameCounters& counters() const;

@@ -32,10 +32,11 @@ uint64_t streamBytes(const SetupPrimitive& p) {
 
 bool Emitter::convex(PixelRect bounds, std::span<const Expression> edges, const Expression& depth, uint32_t value) {
   if (edges.empty() || edges.size() > kMaxEdges) throw std::invalid_argument("pxpl5: a primitive needs 1 to 32 edges");
-  const Screen& screen = *batch_->screen;
-  bounds = {std::max(bounds.x0, 0), std::max(bounds.y0, 0), std::min(bounds.x1, screen.width), std::min(bounds.y1, screen.height)};
-  if (bounds.empty()) return false;
   Batch& batch = *batch_;
+  const Screen& screen = *batch.screen;
+  const PixelRect& clip = batch.clip;
+  bounds = {std::max(bounds.x0, clip.x0), std::max(bounds.y0, clip.y0), std::min(bounds.x1, clip.x1), std::min(bounds.y1, clip.y1)};
+  if (bounds.empty()) return false;
   const auto index = static_cast<uint32_t>(batch.primitives.size());
   // Whether any of d, e, f is non-zero, on their bits (either zero, the sign bit shifted out):
   // without a branch per coefficient, which took about a quarter of this function's instructions.
@@ -148,8 +149,15 @@ void Machine::runOnGraphicsProcessors(size_t taskCount, const std::function<void
 // ---- renderFrame ---------------------------------------------------------------------------
 
 void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize, const RegionProgram& regionDone) {
+  renderFrame({0, 0, state_->screen.width, state_->screen.height}, primitiveCount, setup, batchSize, regionDone);
+}
+
+void Machine::renderFrame(PixelRect window, size_t primitiveCount, const SetupProgram& setup, size_t batchSize,
+                          const RegionProgram& regionDone) {
   State& st = *state_;
   const Screen& screen = st.screen;
+  window = {std::max(window.x0, 0), std::max(window.y0, 0), std::min(window.x1, screen.width), std::min(window.y1, screen.height)};
+  if (window.empty()) window = {};
   FrameCounters& counters = st.counters;
   for (ProcessorLoad& load : counters.graphicsProcessors) load = {};
   for (ProcessorLoad& load : counters.renderers) load = {};
@@ -161,6 +169,7 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
   const auto setUpBatch = [&](size_t b, int worker) {
     Emitter::Batch& batch = st.batches[b];
     batch.screen = &screen;
+    batch.clip = window;
     batch.clear();
     Emitter emitter;
     emitter.batch_ = &batch;
@@ -174,10 +183,16 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
   };
 
   // The ring: the batches' instruction streams (one per (primitive, region) pair) added up.
-  // Then the renderers' order: regions as they come free, the busiest first so that none is
-  // left to finish alone.
+  // Then the renderers' order: the regions the window touches as they come free, the busiest
+  // first so that none is left to finish alone.
   const int regions = screen.regionCount();
   std::vector<uint64_t>& regionWork = st.regionWork;
+  st.regionOrder.clear();
+  for (int r = 0; r < regions && !window.empty(); ++r) {
+    const PixelRect region = screen.region(r);
+    if (region.x0 < window.x1 && window.x0 < region.x1 && region.y0 < window.y1 && window.y0 < region.y1) st.regionOrder.push_back(r);
+  }
+  const size_t activeRegions = st.regionOrder.size();
   const auto ringAndOrder = [&] {
     counters.primitivesIn = primitiveCount;
     counters.primitivesOut = counters.regionPrimitives = counters.instructions = counters.ringBytes = 0;
@@ -192,8 +207,6 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
     }
     counters.ringMessages = counters.regionPrimitives;
     counters.machinePixelOps = counters.instructions * kRegionSize * kRegionSize;
-    st.regionOrder.resize(static_cast<size_t>(regions));
-    std::iota(st.regionOrder.begin(), st.regionOrder.end(), 0);
     std::stable_sort(st.regionOrder.begin(), st.regionOrder.end(),
                      [&](int a, int b) { return regionWork[static_cast<size_t>(a)] > regionWork[static_cast<size_t>(b)]; });
   };
@@ -204,7 +217,9 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
   std::vector<EvaluatorStats> stats(st.counters.renderers.size());
   const auto renderRegion = [&](size_t task, int worker) {
     const int r = st.regionOrder[task];
-    const PixelRect region = screen.region(r);
+    const PixelRect whole = screen.region(r);
+    const PixelRect region{std::max(whole.x0, window.x0), std::max(whole.y0, window.y0), std::min(whole.x1, window.x1),
+                           std::min(whole.y1, window.y1)};
     for (int y = region.y0; y < region.y1; ++y) {
       const size_t row = static_cast<size_t>(y) * static_cast<size_t>(screen.stride) + static_cast<size_t>(region.x0);
       const size_t n = static_cast<size_t>(region.x1 - region.x0);
@@ -231,7 +246,7 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
       }
     }
     load.pixelOps += s.pixelOps - opsBefore;
-    if (regionDone) regionDone({region.x0, region.y0, std::min(region.x1, screen.width), region.y1}, worker);
+    if (regionDone) regionDone(region, worker);
   };
 
   // Both phases in one run of the pool: tasks [0, batchCount) set up batches, the rest render
@@ -243,7 +258,7 @@ void Machine::renderFrame(size_t primitiveCount, const SetupProgram& setup, size
   std::atomic<size_t> batchesDone{0};
   std::atomic<int> ready{0};
   if (batchCount == 0) ringAndOrder(), ready.store(1);
-  st.pool.run(batchCount + static_cast<size_t>(regions), [&](size_t task, int worker) {
+  st.pool.run(batchCount + activeRegions, [&](size_t task, int worker) {
     if (task < batchCount) {
       try {
         setUpBatch(task, worker);

@@ -130,6 +130,13 @@ class Machine {
   // program (or the emitter, or regionDone) reaches the caller; that frame's planes and
   // counters are then unspecified, and the machine stays usable.
   void renderFrame(size_t primitiveCount, const SetupProgram& setup, size_t batchSize = 256, const RegionProgram& regionDone = {});
+  // The same frame within `window` only (a scissor; clipped to the screen): primitives are
+  // clipped to it and those wholly outside dropped before binning, only the regions it touches
+  // render, and only its pixels are cleared and written, with the values the whole frame would
+  // give them; the pixels outside keep what they held. regionDone gets the regions clipped to
+  // the window. The counters count what was sent and rendered. An empty window renders nothing.
+  void renderFrame(PixelRect window, size_t primitiveCount, const SetupProgram& setup, size_t batchSize = 256,
+                   const RegionProgram& regionDone = {});
 
   // Runs a host program on the graphics processors between frames, as the real machine's i860s
   // ran general code: job(task, processor) for every task in [0, taskCount), taken in order by

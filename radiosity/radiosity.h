@@ -73,6 +73,10 @@ struct SolverSettings {
   // unshotFraction() (a sum of magnitudes) larger than the ledgers' signed unshot term
   // (unshotPower()) until it is filled; the application turns it on.
   bool overshoot = false;
+  // After an edit, a patch that did not change corrects its light in the window of its
+  // hemisphere where the changed elements are seen (Solver::edit): about the cost of what
+  // changed. Off: every correction takes back and sends again all of the patch's light.
+  bool windowedCorrections = true;
 };
 
 // Counters since construction. Powers are per channel (see the units above).
@@ -86,6 +90,7 @@ struct Stats {
   uint64_t movedShooters = 0;      // one-element patches whose centre was inside a solid
   uint64_t renormalisedShots = 0;  // shots whose corrections were too big for the rest to absorb
   uint64_t corrections = 0;        // patches whose light was taken back after an edit (Solver::edit)
+  uint64_t windowedCorrections = 0;  // of those, corrected in a window of their hemisphere only
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area
   glm::dvec3 absorbedPower{0};     // absorbed by the front of elements, (1 - rho) of what arrives
@@ -164,7 +169,9 @@ class Solver {
   // their emission. Nothing is restarted (after Chen 1990, "Incremental radiosity"): every patch
   // that has shot and may see what changed has its light taken back along the old geometry's
   // factors (negative light where it fell) and returned to its elements as unshot light, which
-  // shooting then sends along the new geometry's, so the difference is what moves. Take-backs
+  // shooting then sends along the new geometry's, so the difference is what moves. A patch that
+  // did not change sends only that difference, from frames of the part of its hemisphere where
+  // the changed elements are seen (SolverSettings::windowedCorrections). Take-backs
   // come first in step(), the most powerful first; until done, the share of a patch's light
   // that can reach the changed elements counts as unshot. Take-backs left from an earlier edit
   // are done first (here). Throws std::invalid_argument for another number of surfaces, or as
@@ -184,6 +191,10 @@ class Solver {
   struct Edit;
   // One take-back (edit()); false when none is pending.
   bool correct();
+  // The take-back of patch p (of the geometry before the edit) as a difference in a window of
+  // its hemisphere, when it did not change and the window is worth it; false (and nothing done)
+  // otherwise.
+  bool correctInWindow(uint32_t p);
   std::unique_ptr<State> state_;
   std::unique_ptr<Edit> edit_;
 };

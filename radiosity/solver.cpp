@@ -34,6 +34,7 @@
 #include "radiosity/item_buffer.h"
 #include "radiosity/near_field.h"
 #include "radiosity/overshoot.h"
+#include "radiosity/windowed_correction.h"
 
 #include "pxpl5/hemisphere.h"
 
@@ -44,9 +45,11 @@
 #include <map>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace radiosity {
 
@@ -55,6 +58,9 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 double channelSum(const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
+
+// A shooter's centre that sees more than this share of backs is inside a solid (choosePoint).
+constexpr double kMostBacks = 0.25;
 
 // A visibility ratio of pixels to the analytic factor this close to 1 is an unoccluded receiver
 // whose pixel count is a little short (its edges cut pixels), not a shadow.
@@ -102,6 +108,16 @@ struct Solver::State {
   std::vector<glm::dvec3> patchCentre, unshot, shot;
   std::vector<double> patchArea, patchRadius;
   std::vector<uint8_t> pointChosen;  // patchCentre[p] checked for seeing fronts (see choosePoint)
+  // The share of backs the centre saw when choosePoint kept it, else NaN: a window correction
+  // updates it by what changed in its window (Solver::correctInWindow).
+  std::vector<double> pointBackShare;
+  // The energy scales of patch p's last frame (distribute): of its pixel factors, of its judged
+  // ones. A window correction, which sees part of a frame, applies them to its differences.
+  struct FrameScale {
+    glm::dvec3 pixels{1}, judged{1};
+  };
+  std::vector<FrameScale> patchScale;
+  FrameScale lastScale;  // of the last distribute
   std::vector<PatchTree> trees;      // over each patch's elements, in patchElements' order
 
   std::vector<glm::vec3> soupVertices;
@@ -126,6 +142,7 @@ struct Solver::State {
     uint64_t near = 0, small = 0;
   };
   std::array<ReceiverChunk, kReceiverChunks> chunks;
+  std::array<std::vector<NewFactor>, kReceiverChunks> listed;  // listedFactors' per chunk
 
   double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
   Stats stats;
@@ -161,6 +178,17 @@ struct Solver::State {
   // Radiance dB sent from `sourceArea` reaching element j with these factors: the reflected part
   // into j's radiance, its unshot light and its patch's, the rest into the power ledgers.
   void receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front, const glm::dvec3& back);
+  // The factors distribute would give `elements` (not patch p's own) from p's frame, its energy
+  // kept by `scale` (distribute's, which depends on the whole frame): judged ones' new factors,
+  // the others' pixel factors (with a windowed frame, those of the window's pixels), in the
+  // order given; zero factors left out.
+  // p's tree must be lit. For corrections that deposit differences (windowed_correction.h).
+  void listedFactors(uint32_t p, const pxpl5::HemisphereFrame& frame, std::span<const uint32_t> elements,
+                     const FrameScale& scale, std::vector<NewFactor>& out);
+  // Patch p's spheres and its elements' for windowed_correction.h.
+  SceneSpheres spheres() const {
+    return {centre, radius, surfaceOf, patchCentre, patchRadius, patchFirst, patchLast, patchElements};
+  }
 };
 
 // ---- setup -----------------------------------------------------------------------------------
@@ -242,6 +270,8 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
     for (auto* v : {&patchCentre, &unshot, &shot}) v->emplace_back(0.0);
     for (auto* v : {&patchArea, &patchRadius}) v->emplace_back();
     pointChosen.emplace_back();
+    pointBackShare.emplace_back();
+    patchScale.emplace_back();
     trees.emplace_back();
   }
   patchFirst[p] = first;
@@ -271,6 +301,8 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   patchRadius[p] = r;
   unshot[p] = light / a;
   pointChosen[p] = 0;
+  pointBackShare[p] = std::numeric_limits<double>::quiet_NaN();
+  patchScale[p] = {};
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
   trees[p] = buildPatchTree(own, receiver, axes.x, axes.y);
 }
@@ -311,8 +343,9 @@ double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::
 const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
   const pxpl5::HemisphereFrame& centreFrame = frameFrom(p, patchCentre[p]);
   double best = backShare(centreFrame, patchCentre[p]);
-  if (best <= 0.25) {
+  if (best <= kMostBacks) {
     pointChosen[p] = 1;
+    pointBackShare[p] = best;
     return &centreFrame;
   }
   if (elementsOf(p).size() > 1) {
@@ -446,6 +479,7 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
     receive(j, patchArea[p], dB, front, back);
   });
   stats.escapedPower += kPi * dB * patchArea[p] * escaped;
+  patchScale[p] = lastScale;
 }
 
 void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front,
@@ -458,6 +492,46 @@ void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB,
   unshot[patchOf[j]] += gained * (area[j] / patchArea[patchOf[j]]);
   stats.absorbedPower += (1.0 - rho) * power * front;
   stats.backPower += power * back;
+}
+
+void Solver::State::listedFactors(uint32_t p, const pxpl5::HemisphereFrame& frame, std::span<const uint32_t> elements,
+                                  const FrameScale& scale, std::vector<NewFactor>& out) {
+  const glm::dvec3 eye = patchCentre[p];
+  const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
+  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = f.factor;
+  // In the shot's chunks on the graphics processors, one receiver at a time through the shot's
+  // own judgement; listed in the chunks' order.
+  const size_t count = elements.size(), parts = std::min(kReceiverChunks, count);
+  renderer.runOnGraphicsProcessors(parts, [&](size_t c, int) {
+    ReceiverChunk& judged = chunks[c];
+    std::vector<NewFactor>& list = listed[c];
+    list.clear();
+    uint64_t nearCount = 0, smallCount = 0;
+    for (size_t k = c * count / parts; k < (c + 1) * count / parts; ++k) {
+      const uint32_t j = elements[k];
+      judgeReceivers(p, frame, axes, j, j + 1, judged);
+      nearCount += judged.near;
+      smallCount += judged.small;
+      if (!judged.factors.empty()) {
+        replaced[j] = 0;
+        const NewFactor& f = judged.factors.front();
+        if (f.front != glm::dvec3(0) || f.back != glm::dvec3(0)) list.push_back({j, f.front * scale.judged, f.back * scale.judged});
+        continue;
+      }
+      if (pixelFactor[j] == 0) continue;
+      const glm::dvec3 factor = pixelFactor[j] * scale.pixels;
+      if (glm::dot(normal[j], eye) > offset[j]) list.push_back({j, factor, glm::dvec3(0)});
+      else list.push_back({j, glm::dvec3(0), factor});
+    }
+    judged.near = nearCount, judged.small = smallCount;
+  });
+  out.clear();
+  for (size_t c = 0; c < parts; ++c) {
+    out.insert(out.end(), listed[c].begin(), listed[c].end());
+    stats.nearReceivers += chunks[c].near;
+    stats.smallReceivers += chunks[c].small;
+  }
+  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = 0;
 }
 
 template <typename Deposit>
@@ -506,6 +580,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
     }
   }
   stats.renormalisedShots += renormalised;
+  lastScale = {scale, newScale};
   for (ReceiverChunk& chunk : chunks)
     for (NewFactor& f : chunk.factors) f.front *= newScale, f.back *= newScale;
 
@@ -545,6 +620,42 @@ struct Solver::Edit {
   std::vector<TakeBack> pending;  // least power first: taken from the back
   double pendingPower = 0;
   std::vector<uint32_t> elements, patches;  // scratch of one correction
+
+  // What changed, for corrections in a window (correctInWindow).
+  std::vector<uint32_t> elementBefore;             // per element now: its index before, or kNone
+  std::vector<uint8_t> changedBefore, changedNow;  // per element: moved, went or came
+  std::vector<uint32_t> changed[2];                // those elements, before and now
+  struct Cluster {
+    glm::dvec3 centre{0};
+    double radius = 0;
+    uint32_t surface = 0;
+  };
+  std::vector<Cluster> clusters;  // per surface and geometry, a sphere around its changed elements
+  // Scratch of one correction in a window.
+  WindowCull cull;
+  std::vector<uint32_t> drawnNow, judged[2];
+  std::vector<uint32_t> marked;  // per element before: the correction that marked it for judging
+  uint32_t correction = 0;
+  std::vector<pxpl5::Polygon> soup;
+  std::vector<uint32_t> items[2];  // per pixel, the element seen (within the window)
+  std::vector<uint8_t> differs;    // per pixel of the changed window
+  pxpl5::HemisphereFrame frame[2];
+  std::vector<uint32_t> pixelCount, counted;  // per element now, its pixels in the grown window
+  double pixelShare = 0;                      // the factor of one disk pixel
+  std::vector<State::NewFactor> factors[2];
+
+  // The patch of `now` whose elements are patch p's of `before` in the same order, or kNone.
+  uint32_t samePatch(const State& b, const State& now, uint32_t p) const {
+    const std::span<const uint32_t> own = b.elementsOf(p);
+    const uint32_t first = elementNow[own.front()];
+    if (first == kNone) return kNone;
+    const uint32_t q = now.patchOf[first];
+    const std::span<const uint32_t> theirs = now.elementsOf(q);
+    if (theirs.size() != own.size()) return kNone;
+    for (size_t k = 0; k < own.size(); ++k)
+      if (elementNow[own[k]] != theirs[k]) return kNone;
+    return q;
+  }
 };
 
 namespace {
@@ -611,40 +722,108 @@ void Solver::edit(std::span<const Surface> surfaces) {
       n.stats.removedPower -= kPi * n.elementUnshot[i] * n.area[i];  // starts at its emission
       changed[1].push_back(i);
     }
+  edit->elementBefore.assign(n.receiver.size(), kNone);
+  for (uint32_t j = 0; j < old.receiver.size(); ++j)
+    if (edit->elementNow[j] != kNone) edit->elementBefore[edit->elementNow[j]] = j;
+  // Patches split before (their centres were under a solid) are split alike now where their
+  // elements are the same, so that their light is corrected part by part as it was sent.
+  const uint64_t splits = n.stats.splitPatches;
+  for (uint32_t q = 0; q < n.unshot.size(); ++q) {
+    for (;;) {
+      const std::span<const uint32_t> theirs = n.elementsOf(q);
+      const uint32_t first = edit->elementBefore[theirs.front()];
+      if (theirs.size() < 2 || first == kNone || old.elementsOf(old.patchOf[first]).size() >= theirs.size()) break;
+      bool within = true;  // the old patch's elements all in this one
+      for (uint32_t j : old.elementsOf(old.patchOf[first]))
+        within = within && edit->elementNow[j] != kNone && n.patchOf[edit->elementNow[j]] == q;
+      const PatchTree::Node& root = n.trees[q].nodes.front();
+      if (!within || root.children < 2) break;
+      n.split(q);
+    }
+  }
+  n.stats.splitPatches = splits;
+  edit->changedNow.assign(n.receiver.size(), 0);
+  for (uint32_t i : changed[1]) edit->changedNow[i] = 1;
+  // Per surface and geometry, a sphere around its changed elements: a tighter bound on what a
+  // patch sees of them than their sum, and the window a correction looks through.
+  for (int side = 0; side < 2; ++side) {
+    const State& s = side == 0 ? old : n;
+    std::map<uint32_t, std::vector<uint32_t>> bySurface;
+    for (uint32_t j : changed[side]) bySurface[s.surfaceOf[j]].push_back(j);
+    for (const auto& [surface, elements] : bySurface) {
+      glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+      for (uint32_t j : elements) lo = glm::min(lo, s.centre[j] - s.radius[j]), hi = glm::max(hi, s.centre[j] + s.radius[j]);
+      Edit::Cluster c{0.5 * (lo + hi), 0, surface};
+      for (uint32_t j : elements) c.radius = std::max(c.radius, glm::length(s.centre[j] - c.centre) + s.radius[j]);
+      edit->clusters.push_back(c);
+    }
+  }
 
   // The light of patch p that can change course is what reaches the changed elements, before or
   // after: at most their form factors from p's centre, each bounded by area / (pi d^2) (all of
-  // it nearer than their size). A patch that moved or lost elements takes back all of its light.
-  const auto reach = [](const State& s, const glm::dvec3& eye, const glm::dvec3& up, double size,
+  // it nearer than their size), and at most the factors of the spheres around them, each
+  // (radius / d)^2 (d less the patch's size, for the near field's points). Elements of p's own
+  // plane and below its horizon it does not see. A patch that moved or lost elements takes back
+  // all of its light.
+  const auto reach = [](const State& s, const glm::dvec3& eye, const glm::dvec3& up, uint32_t surface, double size,
                         const std::vector<uint32_t>& elements) {
     double factor = 0;
     for (uint32_t j : elements) {
+      if (s.surfaceOf[j] == surface) continue;
       const glm::dvec3 toward = s.centre[j] - eye;
+      if (glm::dot(toward, up) < -s.radius[j]) continue;  // below the horizon
       const double d = glm::length(toward), r = s.radius[j] + size;
-      if (glm::dot(toward, up) <= -r) continue;  // below the horizon
       if (d <= 2 * r) return 1.0;
       factor += s.area[j] / (kPi * (d - r) * (d - r));
       if (factor >= 1) return 1.0;
     }
     return factor;
   };
+  const auto clusterReach = [&](const glm::dvec3& eye, const glm::dvec3& up, uint32_t surface, double size) {
+    double factor = 0;
+    for (const Edit::Cluster& c : edit->clusters) {
+      if (c.surface == surface) continue;
+      const glm::dvec3 toward = c.centre - eye;
+      if (glm::dot(toward, up) < -c.radius) continue;
+      const double d = glm::length(toward) - size;
+      if (d <= c.radius) return 1.0;
+      factor += (c.radius / d) * (c.radius / d);
+    }
+    return std::min(factor, 1.0);
+  };
   // Light that stays where it was sent is still shot light, of the patches its elements are in.
   std::vector<glm::dvec3> keptShot(n.receiver.size(), glm::dvec3(0));
+  std::vector<uint32_t> unaffected;  // patches that shot and see none of the change
   for (uint32_t p = 0; p < old.unshot.size(); ++p) {
     const double power = kPi * channelSum(old.shot[p]) * old.patchArea[p];
     if (power == 0) continue;
     bool itself = false;
     for (uint32_t j : old.elementsOf(p)) itself = itself || changedBefore[j];
-    const glm::dvec3 up = old.surfaces[old.patchSurface[p]].normal;
-    const double share = itself ? 1.0
-                                : std::min(1.0, reach(old, old.patchCentre[p], up, old.patchRadius[p], changed[0]) +
-                                                    reach(n, old.patchCentre[p], up, old.patchRadius[p], changed[1]));
+    const uint32_t si = old.patchSurface[p];
+    const glm::dvec3 up = old.surfaces[si].normal, eye = old.patchCentre[p];
+    const double size = old.patchRadius[p];
+    const double share =
+        itself ? 1.0
+               : std::min({1.0, reach(old, eye, up, si, size, changed[0]) + reach(n, eye, up, si, size, changed[1]),
+                           clusterReach(eye, up, si, size)});
     if (share > 0) {
       edit->pending.push_back({p, power * share});
       edit->pendingPower += power * share;
       continue;
     }
     for (uint32_t j : old.elementsOf(p)) keptShot[edit->elementNow[j]] = old.shot[p];
+    unaffected.push_back(p);
+  }
+  // A patch that sees nothing of the change sees what it saw: the point it chose stands.
+  for (uint32_t p : unaffected) {
+    if (!old.pointChosen[p]) continue;
+    const uint32_t q = edit->samePatch(old, n, p);
+    if (q == kNone) continue;
+    n.pointChosen[q] = 1;
+    n.patchCentre[q] = old.patchCentre[p];
+    n.patchRadius[q] = old.patchRadius[p];
+    n.pointBackShare[q] = old.pointBackShare[p];
+    n.patchScale[q] = old.patchScale[p];
   }
   // The new patches' unshot and shot light from their elements.
   for (uint32_t q = 0; q < n.unshot.size(); ++q) {
@@ -657,6 +836,9 @@ void Solver::edit(std::span<const Surface> surfaces) {
   std::sort(edit->pending.begin(), edit->pending.end(),
             [](const Edit::TakeBack& a, const Edit::TakeBack& b) { return a.power < b.power; });
   if (!edit->pending.empty()) {
+    edit->changed[0] = std::move(changed[0]);
+    edit->changed[1] = std::move(changed[1]);
+    edit->changedBefore = std::move(changedBefore);
     edit->before = std::move(state_);
     edit_ = std::move(edit);
   }
@@ -670,6 +852,12 @@ bool Solver::correct() {
   edit_->pendingPower -= t.power;
   State &before = *edit_->before, &now = *state_;
   const uint32_t p = t.patch;
+  if (correctInWindow(p)) {
+    ++now.stats.corrections;
+    ++now.stats.windowedCorrections;
+    if (edit_->pending.empty()) edit_.reset();
+    return true;
+  }
   const glm::dvec3 S = before.shot[p];
   const double areaBefore = before.patchArea[p];
 
@@ -703,6 +891,9 @@ bool Solver::correct() {
     if (i == kNone) now.stats.removedPower += kPi * S * before.area[j];
     else from.push_back(i);
   }
+  // The frame of the last point chosen is still the renderer's: it is that patch's shot frame.
+  uint32_t lastChosen = kNone;
+  const pxpl5::HemisphereFrame* lastFrame = nullptr;
   for (bool settled = false; !settled;) {
     patches.clear();
     for (uint32_t i : from) patches.push_back(now.patchOf[i]);
@@ -710,7 +901,7 @@ bool Solver::correct() {
     patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
     settled = true;
     for (uint32_t q : patches)
-      if (!now.pointChosen[q]) now.choosePoint(q), settled = false;
+      if (!now.pointChosen[q]) lastFrame = now.choosePoint(q), lastChosen = q, settled = false;
   }
   std::sort(from.begin(), from.end());
   for (uint32_t q : patches) {
@@ -724,14 +915,214 @@ bool Solver::correct() {
     const glm::dvec3 dB = S * (carrying / now.patchArea[q]);
     lightPatchTree(now.trees[q], now.shares, now.nodeLight);
     const double area = now.patchArea[q];
-    const glm::dvec3 out = now.distribute(q, nullptr, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) {
+    const pxpl5::HemisphereFrame* chosen = q == lastChosen && now.pointChosen[q] ? lastFrame : nullptr;
+    lastChosen = kNone;  // any other patch renders a frame of its own
+    const glm::dvec3 out = now.distribute(q, chosen, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) {
       now.receive(j, area, dB, front, behind);
     });
     now.stats.escapedPower += kPi * dB * area * out;
+    now.patchScale[q] = now.lastScale;
     now.shot[q] += dB;
   }
   ++now.stats.corrections;
   if (edit_->pending.empty()) edit_.reset();
+  return true;
+}
+
+// A patch that did not change, shooting from the same point before and now, sees the same
+// except where the changed elements are seen (windowed_correction.h). Its take-back and resend
+// differ only there: both frames are rendered in that window, grown over the receivers seen in
+// it so that their pixel counts and item-buffer targets are whole; the receivers whose pixels
+// or targets differ between the frames, and the changed ones, are judged in both; and what each
+// gets now less what it got is deposited. Energy: the frames' factors of those receivers are
+// taken as the whole frames' would be before their energy is kept (distribute's scale, which
+// moves light between all receivers and the sky by the frame's total correction of near and
+// small receivers, here left out: at most that correction's change, a fraction of a percent
+// of the difference on the shipped scenes); what the difference does not deposit leaves as
+// escaped light, so the ledgers stay exact.
+bool Solver::correctInWindow(uint32_t p) {
+  Edit& e = *edit_;
+  State &before = *e.before, &now = *state_;
+
+  if (!before.settings.windowedCorrections) return false;
+  // The same patch now, shooting from the same point: its centre, where the centre was kept (a
+  // point moved off the centre is chosen again from the centre, as the whole correction does).
+  const uint32_t q = e.samePatch(before, now, p);
+  if (q == kNone || !before.pointChosen[p] || std::isnan(before.pointBackShare[p]) ||
+      now.patchCentre[q] != before.patchCentre[p])
+    return false;
+  const uint32_t si = before.patchSurface[p];
+  const glm::dvec3 eye = before.patchCentre[p], up = before.surfaces[si].normal;
+  const HemisphereAxes axes = hemisphereAxes(glm::vec3(up));
+  const int resolution = before.settings.resolution;
+
+  // The window: where the changed elements are seen, before or now, grown over what is seen there.
+  pxpl5::PixelRect changed{};
+  for (const Edit::Cluster& c : e.clusters)
+    if (c.surface != si) changed = unite(changed, sphereWindow(axes, eye, resolution, c.centre, c.radius));
+  WindowCull& cull = e.cull;
+  // Near and small receivers' factors are judged from their whole pixel counts or their
+  // targets' items (judgeReceivers' first tests, before any pixel is read); the rest are counts.
+  const double nearLimit = before.settings.nearFieldRatio * before.patchRadius[p];
+  const double smallLimit = before.settings.smallReceiverPixels * before.pixelShare;
+  const auto whole = [&](uint32_t j) {
+    const double gap = glm::length(before.centre[j] - eye) - before.radius[j];
+    return gap < nearLimit || (glm::dot(before.normal[j], eye) > before.offset[j] && before.area[j] < smallLimit * kPi * gap * gap);
+  };
+  cull.cull(before.spheres(), axes, eye, resolution, si, changed, whole);
+  // Before: the frame in the grown window. Now: the same outside the changed window, so only
+  // that is rendered, and the rest is before's seen through the elements' new indices.
+  std::vector<uint32_t>& drawnNow = e.drawnNow;
+  drawnNow.clear();
+  for (uint32_t j : cull.drawn)
+    if (!e.changedBefore[j] && overlaps(cull.rectOf(j), changed)) drawnNow.push_back(e.elementNow[j]);
+  for (uint32_t i : e.changed[1])
+    if (now.surfaceOf[i] != si && overlaps(sphereWindow(axes, eye, resolution, now.centre[i], now.radius[i]), changed))
+      drawnNow.push_back(i);
+  std::sort(drawnNow.begin(), drawnNow.end());
+  const auto render = [&](State& s, std::span<const uint32_t> drawn, const pxpl5::PixelRect& window, int side) {
+    e.soup.clear();
+    for (uint32_t j : drawn) e.soup.push_back(s.soupPolygons[j]);
+    const pxpl5::HemisphereFrame& f = s.renderer.render({glm::vec3(eye), glm::vec3(up), {}}, {s.soupVertices, e.soup}, window);
+    ++now.stats.frames;
+    std::vector<uint32_t>& items = e.items[side];
+    items.resize(f.items.size(), pxpl5::kNoValue);
+    const size_t stride = static_cast<size_t>(f.stride);
+    for (int y = window.y0; y < window.y1; ++y)
+      for (int x = window.x0; x < window.x1; ++x) {
+        const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+        items[at] = f.items[at] == pxpl5::kNoValue ? pxpl5::kNoValue : drawn[f.items[at]];
+      }
+    pxpl5::HemisphereFrame& out = e.frame[side];
+    out.factors.assign(f.factors.begin(), f.factors.end());
+    out.total = f.total;
+    out.items = items;
+    out.weights = f.weights;
+    out.width = f.width, out.height = f.height, out.stride = f.stride;
+    return &out;
+  };
+  const pxpl5::HemisphereFrame& frameBefore = *render(before, cull.drawn, cull.window, 0);
+  pxpl5::HemisphereFrame& frameNow = *render(now, drawnNow, changed, 1);
+  if (e.pixelShare == 0) {
+    // Every disk pixel weighs the same: pxpl5's share, one over their number.
+    const auto disk = std::count_if(frameNow.weights.begin(), frameNow.weights.end(), [](float w) { return w > 0; });
+    e.pixelShare = 1.0 / static_cast<double>(disk);
+  }
+  {
+    const size_t stride = static_cast<size_t>(frameNow.stride);
+    std::vector<uint32_t>& items = e.items[1];
+    std::vector<uint32_t>& count = e.pixelCount;
+    if (count.size() < now.receiver.size()) count.resize(now.receiver.size(), 0);
+    e.counted.clear();
+    for (int y = cull.window.y0; y < cull.window.y1; ++y)
+      for (int x = cull.window.x0; x < cull.window.x1; ++x) {
+        const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+        if (y < changed.y0 || y >= changed.y1 || x < changed.x0 || x >= changed.x1) {
+          const uint32_t b = e.items[0][at];
+          items[at] = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
+        }
+        if (const uint32_t i = items[at]; i != pxpl5::kNoValue && count[i]++ == 0) e.counted.push_back(i);
+      }
+    std::sort(e.counted.begin(), e.counted.end());
+    frameNow.factors.clear();
+    frameNow.total = 0;
+    for (uint32_t i : e.counted) {
+      frameNow.factors.push_back({i, static_cast<double>(std::exchange(count[i], 0)) * e.pixelShare});
+      frameNow.total += frameNow.factors.back().factor;
+    }
+  }
+
+  // The centre's share of backs changes by the window's: it must still be kept now.
+  const auto backs = [&](const State& s, const pxpl5::HemisphereFrame& f) {
+    double share = 0;
+    for (const pxpl5::IdFactor& k : f.factors)
+      if (glm::dot(s.normal[k.id], eye) <= s.offset[k.id]) share += k.factor;
+    return share;
+  };
+  const double centreBacks = before.pointBackShare[p] - backs(before, frameBefore) + backs(now, frameNow);
+  if (!now.pointChosen[q]) {
+    if (centreBacks > kMostBacks) return false;
+    now.pointChosen[q] = 1;
+    now.pointBackShare[q] = centreBacks;
+  }
+
+  // Judged again: the changed elements, and the others whose pixels or targets differ.
+  const size_t stride = static_cast<size_t>(frameBefore.stride);
+  const pxpl5::PixelRect inside{changed.x0, changed.y0, std::min(changed.x1, cull.window.x1), std::min(changed.y1, cull.window.y1)};
+  const size_t insideWidth = static_cast<size_t>(std::max(0, inside.x1 - inside.x0));
+  e.differs.assign(static_cast<size_t>(pixelsOf(inside)), 0);
+  if (e.marked.size() < before.receiver.size()) e.marked.resize(before.receiver.size(), 0);
+  const uint32_t mark = ++e.correction;
+  for (int y = inside.y0; y < inside.y1; ++y)
+    for (int x = inside.x0; x < inside.x1; ++x) {
+      const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+      const uint32_t b = e.items[0][at], n = e.items[1][at];
+      const bool changedB = b != pxpl5::kNoValue && e.changedBefore[b], changedN = n != pxpl5::kNoValue && e.changedNow[n];
+      const uint32_t bNow = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
+      if (!changedB && !changedN && bNow == n) continue;
+      e.differs[static_cast<size_t>(y - inside.y0) * insideWidth + static_cast<size_t>(x - inside.x0)] = 1;
+      if (b != pxpl5::kNoValue && !changedB) e.marked[b] = mark;
+      if (n != pxpl5::kNoValue && !changedN) e.marked[e.elementBefore[n]] = mark;
+    }
+  std::vector<uint32_t>&judgedBefore = e.judged[0], &judgedNow = e.judged[1];
+  judgedBefore.clear();
+  judgedNow.clear();
+  for (uint32_t j : cull.judged) {
+    if (e.changedBefore[j]) continue;
+    if (e.marked[j] != mark) {
+      for (size_t k = 0; k < State::kTargets && e.marked[j] != mark; ++k) {
+        int x = 0, y = 0;
+        if (!targetPixel(axes, eye, resolution, before.targets[State::kTargets * j + k], x, y)) continue;
+        if (x < inside.x0 || x >= inside.x1 || y < inside.y0 || y >= inside.y1) continue;
+        if (e.differs[static_cast<size_t>(y - inside.y0) * insideWidth + static_cast<size_t>(x - inside.x0)]) e.marked[j] = mark;
+      }
+      if (e.marked[j] != mark) continue;
+    }
+    judgedBefore.push_back(j);
+    judgedNow.push_back(e.elementNow[j]);
+  }
+  for (uint32_t j : e.changed[0])
+    if (before.surfaceOf[j] != si) judgedBefore.push_back(j);
+  for (uint32_t i : e.changed[1])
+    if (now.surfaceOf[i] != si) judgedNow.push_back(i);
+  std::sort(judgedBefore.begin(), judgedBefore.end());
+  std::sort(judgedNow.begin(), judgedNow.end());
+
+  // Their factors before and now, from the same elements lit alike.
+  const glm::dvec3 S = before.shot[p];
+  const double area = before.patchArea[p];
+  for (State* s : {&before, &now}) {
+    const uint32_t patch = s == &before ? p : q;
+    s->shares.clear();
+    for (uint32_t k : s->elementsOf(patch)) s->shares.push_back(s->area[k] / area * glm::dvec3(1));
+    lightPatchTree(s->trees[patch], s->shares, s->nodeLight);
+  }
+  // The scales of p's last whole frame, for both: the window changes them by the change of its
+  // judged receivers' corrections only.
+  before.listedFactors(p, frameBefore, judgedBefore, before.patchScale[p], e.factors[0]);
+  now.listedFactors(q, frameNow, judgedNow, before.patchScale[p], e.factors[1]);
+  now.patchScale[q] = before.patchScale[p];
+
+  // Now less before; what fell on removed elements comes off their ledger.
+  glm::dvec3 arrived{0};
+  for (const State::NewFactor& f : e.factors[0]) {
+    arrived -= f.front + f.back;
+    if (const uint32_t i = e.elementNow[f.element]; i != kNone) {
+      now.receive(i, area, -S, f.front, f.back);
+      continue;
+    }
+    const glm::dvec3& rho = before.surfaces[before.surfaceOf[f.element]].reflectance;
+    const glm::dvec3 power = -kPi * S * area;
+    now.stats.absorbedPower += (1.0 - rho) * power * f.front;
+    now.stats.backPower += power * f.back;
+    now.stats.removedPower += rho * power * f.front;
+  }
+  for (const State::NewFactor& f : e.factors[1]) {
+    arrived += f.front + f.back;
+    now.receive(f.element, area, S, f.front, f.back);
+  }
+  now.stats.escapedPower -= kPi * S * area * arrived;
+  now.shot[q] += S;
   return true;
 }
 

@@ -140,6 +140,7 @@ int runRender(const RenderOptions& options) {
                          {"converge_ms", millisecondsSince(start)},
                          {"elements_changed", changed},
                          {"corrections", solver->stats().corrections},
+                         {"windowed_corrections", solver->stats().windowedCorrections},
                          {"shots", solver->stats().shots},
                          {"unshot_fraction", solver->unshotFraction()}});
   }

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <numbers>
 #include <cstdio>
 #include <random>
@@ -280,6 +281,41 @@ TEST(Pxpl5Hemisphere, SameAnswerForOneTwoAndEightThreadsAndForTheReference) {
         EXPECT_EQ(got.factors[i].id, expected.factors[i].id);
         EXPECT_EQ(got.factors[i].factor, expected.factors[i].factor);
       }
+    }
+  }
+}
+
+// A windowed frame has the whole frame's items inside the window and each id's factor is the
+// weight of its pixels there; a window is cheaper by what it leaves out. Both projections.
+TEST(Pxpl5Hemisphere, WindowedFrameIsTheWholeFrameInsideItsWindow) {
+  const Soup soup = randomTriangles(5000, 7), other = randomTriangles(3000, 8);
+  const Viewpoint view{{0.1f, 0.2f, 0.3f}, {0.3f, -0.2f, 1}, {}};
+  for (Projection projection : {Projection::kHemisphere, Projection::kHemicube}) {
+    HemisphereRenderer whole(settings(256, projection, 2)), windowed(settings(256, projection, 2));
+    const HemisphereFrame& full = whole.render(view, soup.view());
+    const uint64_t fullPrimitives = whole.counters().regionPrimitives;
+    for (const PixelRect window : {PixelRect{60, 90, 150, 170}, PixelRect{0, 0, 256, 40}, PixelRect{250, 500, 300, 900}}) {
+      const HemisphereFrame& earlier = windowed.render(view, other.view());  // other items everywhere
+      const std::vector<uint32_t> stale(earlier.items.begin(), earlier.items.end());
+      const HemisphereFrame& got = windowed.render(view, soup.view(), window);
+      EXPECT_LT(windowed.counters().regionPrimitives, fullPrimitives);
+      std::map<uint32_t, double> expected;  // per id, the weight of its pixels in the window
+      for (int y = 0; y < full.height; ++y) {
+        for (int x = 0; x < full.width; ++x) {
+          const size_t at = static_cast<size_t>(y) * static_cast<size_t>(full.stride) + static_cast<size_t>(x);
+          const bool in = x >= window.x0 && x < window.x1 && y >= window.y0 && y < window.y1;
+          ASSERT_EQ(got.items[at], in ? full.items[at] : stale[at]) << x << "," << y;
+          if (in && full.items[at] != kNoValue) expected[soup.polygons[full.items[at]].id] += full.weights[at];
+        }
+      }
+      ASSERT_EQ(got.factors.size(), expected.size());
+      double total = 0;
+      for (const IdFactor& f : got.factors) {
+        EXPECT_NEAR(f.factor, expected[f.id], 1e-6 * f.factor);
+        EXPECT_LE(f.factor, factorOf(full, f.id) * (1 + 1e-12));
+        total += f.factor;
+      }
+      EXPECT_NEAR(got.total, total, 1e-12);
     }
   }
 }

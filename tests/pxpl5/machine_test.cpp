@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -244,6 +245,52 @@ TEST(Pxpl5Machine, SameFrameForAnyNumberOfGraphicsProcessors) {
       EXPECT_EQ(rendered, b.regionPrimitives);
       EXPECT_EQ(ops, b.emulatedPixelOps);
       EXPECT_EQ(regions, 16u);
+    }
+  }
+}
+
+// A scissored frame gives the whole frame's pixels inside its window (windows across region
+// borders, at the screen's edge, past it, empty) and leaves every pixel outside as the frame
+// before left it.
+TEST(Pxpl5Machine, WindowRendersTheWholeFramesPixelsInsideAndTouchesNothingOutside) {
+  const RandomFrame frame(4, 333, 260, 2000), other(5, 333, 260, 2000);
+  Machine whole({333, 260, 2, Evaluator::kVector});
+  whole.renderFrame(frame.bounds.size(), frame.program(), 100);
+  const std::vector<uint32_t> value(whole.valuePlane().begin(), whole.valuePlane().end());
+  const std::vector<float> depth(whole.depthPlane().begin(), whole.depthPlane().end());
+  const size_t stride = static_cast<size_t>(whole.pixelStride());
+  for (Evaluator evaluator : {Evaluator::kVector, Evaluator::kScalarReference}) {
+    for (const PixelRect window : {PixelRect{100, 50, 200, 140}, PixelRect{0, 0, 13, 7}, PixelRect{120, 120, 140, 135},
+                                   PixelRect{300, 200, 400, 300}, PixelRect{-20, -20, 5, 400}, PixelRect{50, 50, 50, 90}}) {
+      SCOPED_TRACE(std::to_string(window.x0) + "," + std::to_string(window.y0) + " " + std::to_string(window.x1) + "," + std::to_string(window.y1));
+      Machine machine({333, 260, 2, evaluator});
+      machine.renderFrame(other.bounds.size(), other.program(), 100);
+      const std::vector<uint32_t> before(machine.valuePlane().begin(), machine.valuePlane().end());
+      const std::vector<float> depthBefore(machine.depthPlane().begin(), machine.depthPlane().end());
+      std::vector<PixelRect> regions;
+      std::mutex mutex;
+      machine.renderFrame(window, frame.bounds.size(), frame.program(), 100, [&](PixelRect r, int) {
+        std::lock_guard lock(mutex);
+        regions.push_back(r);
+      });
+      uint64_t regionPixels = 0;
+      for (const PixelRect& r : regions) {
+        EXPECT_FALSE(r.empty());
+        EXPECT_TRUE(r.x0 >= window.x0 && r.y0 >= window.y0 && r.x1 <= window.x1 && r.y1 <= window.y1);
+        regionPixels += static_cast<uint64_t>(r.x1 - r.x0) * static_cast<uint64_t>(r.y1 - r.y0);
+      }
+      uint64_t inside = 0;
+      for (int y = 0; y < 260; ++y) {
+        for (int x = 0; x < 333; ++x) {
+          const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+          const bool in = x >= window.x0 && x < window.x1 && y >= window.y0 && y < window.y1;
+          inside += in;
+          ASSERT_EQ(machine.valuePlane()[at], in ? value[at] : before[at]) << x << "," << y;
+          ASSERT_EQ(std::bit_cast<uint32_t>(machine.depthPlane()[at]), std::bit_cast<uint32_t>(in ? depth[at] : depthBefore[at]));
+        }
+      }
+      EXPECT_EQ(regionPixels, inside);
+      EXPECT_LE(machine.counters().regionPrimitives, whole.counters().regionPrimitives);
     }
   }
 }

@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <glm/common.hpp>
 
 namespace radiosity {
 namespace {
@@ -67,6 +72,52 @@ TEST(RadiosityEdit, ARemeshedSurfaceGathersItsLight) {
   fresh.solve(1e-3);
   EXPECT_LT(meanDifference(solver, fresh), 0.01);
   EXPECT_LT(ledgerResidual(solver), 1e-12);
+}
+
+// A correction in a window of the hemisphere deposits what taking back and sending again all of
+// the patch's light deposits. Compared on what the corrections changed, element by element;
+// they differ by the energy the whole frames keep by rescaling (radiosity.h), which the window
+// leaves to the sky.
+TEST(RadiosityEdit, AWindowedCorrectionDepositsWhatAWholeOneDoes) {
+  SolverSettings whole;
+  whole.windowedCorrections = false;
+  Solver windowed(roomWithBoard(0, 0.4)), reference(roomWithBoard(0, 0.4), whole);
+  windowed.solve(1e-2);
+  reference.solve(1e-2);
+  const std::vector<Surface> moved = roomWithBoard(0.15, 0.35);
+  windowed.edit(moved);
+  reference.edit(moved);
+  std::vector<std::vector<glm::dvec3>> start;
+  for (uint32_t s = 0; s < moved.size(); ++s) {
+    const std::span<const glm::dvec3> r = windowed.elementRadiance(s);
+    start.emplace_back(r.begin(), r.end());
+  }
+  ASSERT_GT(windowed.pendingCorrections(), 0u);
+  while (windowed.pendingCorrections() > 0) windowed.step();
+  while (reference.pendingCorrections() > 0) reference.step();
+  EXPECT_GT(windowed.stats().windowedCorrections, windowed.stats().corrections / 3);
+  EXPECT_EQ(reference.stats().windowedCorrections, 0u);
+  EXPECT_EQ(windowed.stats().corrections, reference.stats().corrections);
+  EXPECT_LT(ledgerResidual(windowed), 1e-12);
+
+  double difference = 0, change = 0, worst = 0;
+  for (uint32_t s = 0; s < moved.size(); ++s) {
+    const std::span<const glm::dvec3> a = windowed.elementRadiance(s), b = reference.elementRadiance(s);
+    for (size_t e = 0; e < a.size(); ++e) {
+      const double areaOf = test::area(moved[s], static_cast<uint32_t>(e));
+      const double d = test::channelSum(glm::abs(a[e] - b[e])), c = test::channelSum(glm::abs(b[e] - start[s][e]));
+      difference += areaOf * d;
+      change += areaOf * c;
+      worst = std::max(worst, d / test::channelSum(b[e]));
+    }
+  }
+  std::printf("windowed corrections: %llu of %llu; deposits differ by %.3f%% of what the corrections changed, "
+              "worst element %.3f%% of its radiance\n",
+              static_cast<unsigned long long>(windowed.stats().windowedCorrections),
+              static_cast<unsigned long long>(windowed.stats().corrections), 100 * difference / change, 100 * worst);
+  EXPECT_GT(change, 0);
+  EXPECT_LT(difference, 0.02 * change);
+  EXPECT_LT(worst, 0.005);
 }
 
 TEST(RadiosityEdit, NoChangeNoCorrectionsAndAWrongSceneIsRefused) {

@@ -1,0 +1,85 @@
+// Corrections after an edit that cost what changed (Chen 1990, "Incremental radiosity": shoot
+// the difference). A patch that did not move sees the old and the new scene alike except in the
+// directions of the elements that changed, so its take-back and resend differ only in a window
+// of its hemisphere image: both frames are rendered in that window alone (pxpl5's scissor), and
+// only the receivers whose pixels or item-buffer targets changed there are judged again.
+// These are the geometric steps, on plain arrays; Solver::correct (solver.cpp) drives them.
+// Internal to radiosity/.
+//
+// Windows are rectangles of pixels of the hemisphere image (pxpl5::HemisphereFrame), `resolution`
+// across; a pixel (i, j) looks along local (x, y, z) with x = (i + 0.5) * 2 / resolution - 1.
+#pragma once
+
+#include "radiosity/item_buffer.h"
+
+#include "pxpl5/pxpl5.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace radiosity {
+
+// The pixels whose directions from `eye` can meet the sphere (centre, radius), a pixel wider
+// each side for rounding; empty when the sphere is wholly below the horizon, the whole image
+// when it holds the eye. Conservative: every polygon inside the sphere is drawn within it, and
+// every point inside reads its item from within it.
+pxpl5::PixelRect sphereWindow(const HemisphereAxes& axes, const glm::dvec3& eye, int resolution, const glm::dvec3& centre,
+                              double radius);
+
+// The smallest rectangle holding both; an empty one is left out.
+pxpl5::PixelRect unite(const pxpl5::PixelRect& a, const pxpl5::PixelRect& b);
+bool overlaps(const pxpl5::PixelRect& a, const pxpl5::PixelRect& b);
+inline int64_t pixelsOf(const pxpl5::PixelRect& r) {
+  return r.empty() ? 0 : int64_t{r.x1 - r.x0} * int64_t{r.y1 - r.y0};
+}
+
+// The elements and their patches as spheres (the scene of one geometry); patch p's elements are
+// patchElements[patchFirst[p], patchLast[p]), and its sphere holds them all.
+struct SceneSpheres {
+  std::span<const glm::dvec3> centre;
+  std::span<const double> radius;
+  std::span<const uint32_t> surface;
+  std::span<const glm::dvec3> patchCentre;
+  std::span<const double> patchRadius;
+  std::span<const uint32_t> patchFirst, patchLast, patchElements;
+};
+
+// Which elements a window correction looks at, from the window `changed` around the elements
+// that changed: the elements whose pixels may lie in it (`judged`: they are judged again) and,
+// so that their pixel counts and item-buffer targets are whole, the window grown over their
+// windows (`window`), and every element that may be drawn there (`drawn`, ascending). Elements
+// of surface `skipSurface` (the shooter's plane: not drawn, not judged) are left out.
+// `whole(j)`: whether element j's judgement may read more of the frame than its pixels' count in
+// the window (its whole count, or items at its targets), so the window must hold all of it; for
+// the others (factors that are pixel counts) the difference of the window's counts is the
+// difference of the whole frames'.
+class WindowCull {
+ public:
+  void cull(const SceneSpheres& scene, const HemisphereAxes& axes, const glm::dvec3& eye, int resolution,
+            uint32_t skipSurface, const pxpl5::PixelRect& changed, const std::function<bool(uint32_t)>& whole);
+  // Element j's sphereWindow from the last cull's eye (computed once per cull).
+  const pxpl5::PixelRect& rectOf(uint32_t j);
+
+  std::vector<uint32_t> judged, drawn;
+  pxpl5::PixelRect window;
+
+ private:
+  SceneSpheres scene_;
+  HemisphereAxes axes_;
+  glm::dvec3 eye_{0};
+  int resolution_ = 0;
+  uint32_t generation_ = 0;
+  std::vector<pxpl5::PixelRect> rect_, patchRect_;
+  std::vector<uint32_t> rectMade_, drawnMark_;  // per element, the cull that made its rect, that drew it
+};
+
+// The pixel of the hemisphere image whose item the item buffer reads for `target` seen from
+// `eye` (as itemBufferVisibility does), or false when the target is on or below the horizon.
+bool targetPixel(const HemisphereAxes& axes, const glm::dvec3& eye, int resolution, const glm::dvec3& target, int& i,
+                 int& j);
+
+}  // namespace radiosity
