@@ -52,6 +52,11 @@ struct Receiver {
   double offset = 0;
   double area = 0;
   Quadrature rule;
+  // The rule's points and weights by coordinate, for the vector lanes (a triangle's fourth
+  // weight is 0).
+  struct RuleLanes {
+    alignas(32) double x[4], y[4], z[4], weight[4];
+  } lanes{};
 };
 Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal);
 
@@ -65,6 +70,12 @@ constexpr double kGaussReceiverRatio = 4;
 // The form factor from a differential area at `point` with unit `normal` to `r`, unoccluded:
 // by r's Gauss rule where kGaussReceiverRatio allows, else pointToPolygon.
 double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
+
+// The sum over r's Gauss points of weight x cos at the point x |cos at r| / d^2 (the factor from
+// `point` by r's rule, over area / pi): gaussSum four points in AVX2 lanes where the CPU can,
+// with the same bits as the plain loop of gaussSumReference.
+double gaussSum(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
+double gaussSumReference(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
 
 // The distance from `point` to r's polygon, or at least `enough` when it is that far: the
 // distance to r's bounding sphere answers when that is at least `enough`.

@@ -172,6 +172,28 @@ TEST(RadiosityPhysics, VectorContourSumMatchesScalarReference) {
   EXPECT_EQ(differ, 0);
 }
 
+// The receiver's Gauss rule with its points in vector lanes against its scalar reference: the
+// same bits, for random triangles and quads seen from points all around them.
+TEST(RadiosityPhysics, VectorGaussSumMatchesScalarReference) {
+  uint64_t state = 4242;
+  const auto uniform = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) * 0x1.0p-53;
+  };
+  const auto around = [&] { return glm::dvec3(4 * uniform() - 2, 4 * uniform() - 2, 4 * uniform() - 2); };
+  int differ = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int m = 3 + i % 2;
+    const glm::dvec3 a = around(), u = 0.3 * around(), w = 0.3 * around();
+    Polygon3 p{{a, a + u, a + u + w, a + w}, m};
+    const Receiver r = makeReceiver(p, glm::normalize(glm::cross(u, w)));
+    const glm::dvec3 point = around(), normal = glm::normalize(around());
+    const double vector = gaussSum(point, normal, r), reference = gaussSumReference(point, normal, r);
+    differ += std::memcmp(&vector, &reference, sizeof(double)) != 0;
+  }
+  EXPECT_EQ(differ, 0);
+}
+
 // The near field through the patch's tree (clusters far for their size by four points) against
 // its reference, every element of the patch integrated on its own: a 6 x 6 patch lit unevenly
 // (per element and channel), receivers from touching it to beyond the near field, facing every
