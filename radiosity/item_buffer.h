@@ -35,14 +35,4 @@ struct ElementPlanes {
 double itemBufferVisibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
                             std::span<const glm::dvec3> targets, uint32_t element, const ElementPlanes& planes);
 
-// The same per target (at most 32): bit k of `considered` is set when target k is above the
-// horizon and inside the disk, bit k of `visible` when it is also seen.
-struct TargetsSeen {
-  uint32_t considered = 0, visible = 0;
-};
-TargetsSeen itemBufferTargets(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
-                              std::span<const glm::dvec3> targets, uint32_t element, const ElementPlanes& planes);
-// itemBufferVisibility's answer for the targets in `mask`.
-double visibleShare(const TargetsSeen& seen, uint32_t mask);
-
 }  // namespace radiosity

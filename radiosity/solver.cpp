@@ -137,10 +137,6 @@ struct Solver::State {
   void build(std::span<const Surface> input);
   double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye, uint32_t j,
                     double unoccluded) const;
-  // visibility() of element j, `gap` from the frame's centre (to its bounding sphere), with j's
-  // unoccluded factor from there in `unoccluded`, which is left 0 when the item buffer alone says 0.
-  double visibilityFirst(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye,
-                         const glm::dvec3& eyeNormal, uint32_t j, double gap, double& unoccluded) const;
   // New factors for the near and small receivers among elements [begin, end) of shooter p's
   // frame (see shoot).
   void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
@@ -295,29 +291,6 @@ double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const Hemi
   return itemBufferVisibility(frame, axes, eye, {targets.data() + kTargets * j, count}, j, {normal, offset, surfaceOf});
 }
 
-// A receiver whose Lambert bound (area / (pi gap^2)) is under smallReceiverPixels is small
-// whatever its factor: the item buffer is read first, and one hidden at its centroid and every
-// other target it is read at needs no factor (most of the receivers of a furnished room's
-// shooter are hidden by something).
-double Solver::State::visibilityFirst(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes,
-                                      const glm::dvec3& eye, const glm::dvec3& eyeNormal, uint32_t j, double gap,
-                                      double& unoccluded) const {
-  const double bound = gap > 0 ? area[j] / (kPi * gap * gap) : INFINITY;
-  unoccluded = 0;
-  if (bound >= settings.smallReceiverPixels * pixelShare) {
-    unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
-    return visibility(frame, axes, eye, j, unoccluded);
-  }
-  // As visibility() reads: the centroid alone under a pixel, else every target.
-  const size_t count = bound < pixelShare ? 1 : 1 + static_cast<size_t>(receiver[j].polygon.n);
-  const TargetsSeen seen =
-      itemBufferTargets(frame, axes, eye, {targets.data() + kTargets * j, count}, j, {normal, offset, surfaceOf});
-  if ((seen.considered & 1u) != 0 && seen.visible == 0) return 0;  // 0 with the centroid alone too
-  unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
-  if (unoccluded >= settings.smallReceiverPixels * pixelShare) return visibility(frame, axes, eye, j, unoccluded);
-  return visibleShare(seen, unoccluded < pixelShare ? 1u : ~0u);
-}
-
 double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const {
   double back = 0;
   for (const pxpl5::IdFactor& f : frame.factors)
@@ -408,8 +381,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       // elements in front of the plane see: j's front, unless another object is in the way (j's
       // own solid cannot be when it is convex). Without this a floor patch reaching around a box
       // left the box's face 15% too dark.
-      double unoccluded = 0;
-      const double v = visibilityFirst(frame, axes, eye, eyeNormal, j, gap, unoccluded);
+      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
       const bool behind = glm::dot(normal[j], eye) <= offset[j];
       if (v > 0 || behind) {
         patchToReceiver(trees[p], nodeLight, own, receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
@@ -424,11 +396,10 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       if (glm::dot(normal[j], eye) <= offset[j]) continue;
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
-      // Hidden (unoccluded left 0) or unseen, with no pixels: nothing to replace.
-      double unoccluded = 0;
-      const double v = visibilityFirst(frame, axes, eye, eyeNormal, j, gap, unoccluded);
+      const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
-      f.front = glm::dvec3(unoccluded * v);  // its front faces the centre (above)
+      const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded) : 0;
+      (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
       ++smallCount;
     }
     replaced[j] = 1;
