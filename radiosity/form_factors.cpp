@@ -8,10 +8,9 @@
 #include <cmath>
 #include <numbers>
 
-// AVX2 intrinsics where GCC or Clang builds for x86-64 (the lanes are chosen at run time); the
-// plain scalar loops elsewhere and under ThreadSanitizer (its runtime is not ready for the CPU
-// check).
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__SANITIZE_THREAD__)
+// AVX2 intrinsics where GCC or Clang builds for x86-64, used when the CPU has AVX2 (asked at run
+// time: the build's baseline lacks it); the plain scalar loops elsewhere.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define WALKRAD_CONTOUR_AVX2 1
 #include <immintrin.h>
 #else
@@ -178,7 +177,6 @@ namespace {
 
 double contourSum(const glm::dvec3* v, int m, const glm::dvec3& normal) {
 #if WALKRAD_CONTOUR_AVX2
-  // The CPU's AVX2 is asked once; the build's baseline (x86-64) lacks it.
   static const bool avx2 = __builtin_cpu_supports("avx2");
   if (avx2 && (m == 3 || m == 4)) return contourSumAvx2(v, m, normal);
 #endif

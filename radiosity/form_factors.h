@@ -26,9 +26,10 @@ glm::dvec3 polygonCentroid(const Polygon3& p);  // area-weighted
 double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const Polygon3& p);
 
 // Lambert's sum over the edges of the polygon v[0, m) (corners relative to the point, on or
-// above its horizon): each edge's angle times the cosine between its great circle and
-// `normal`, times 2 pi. contourSum takes a triangle's or quad's edges four at a time where the
-// CPU can (AVX2), with the same bits as the plain loop of contourSumReference.
+// above its horizon): each edge's angle times the cosine between `normal` and the normal of the
+// edge's great circle; +-2 pi times the form factor, by the winding. contourSum takes a
+// triangle's or quad's edges four at a time where the CPU can (AVX2), with the same bits as the
+// plain loop of contourSumReference.
 double contourSum(const glm::dvec3* v, int m, const glm::dvec3& normal);
 double contourSumReference(const glm::dvec3* v, int m, const glm::dvec3& normal);
 
