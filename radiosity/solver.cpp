@@ -117,8 +117,11 @@ struct Solver::State {
   std::vector<glm::dvec3> shares;
   std::vector<NodeLight> nodeLight;
   // The receivers of a shot are judged in a fixed number of chunks, whatever the number of
-  // graphics processors, and added up in chunk order: the same sums with any thread count.
-  static constexpr size_t kReceiverChunks = 16;
+  // graphics processors, and added up in chunk order: the same sums with any thread count. Many
+  // small chunks, because a shot's near receivers (most of the work) sit together in element
+  // order: taken by two processors, 16 chunks left the office's receiver work 19% longer than
+  // half of it, 256 leave it 5% longer.
+  static constexpr size_t kReceiverChunks = 256;
   struct ReceiverChunk {
     std::vector<NewFactor> factors;
     double replacedPixels = 0;
