@@ -8,6 +8,15 @@
 #include <cmath>
 #include <numbers>
 
+// AVX2 intrinsics where GCC or Clang builds for x86-64, used when the CPU has AVX2 (asked at run
+// time: the build's baseline lacks it); the plain scalar loops elsewhere.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define WALKRAD_CONTOUR_AVX2 1
+#include <immintrin.h>
+#else
+#define WALKRAD_CONTOUR_AVX2 0
+#endif
+
 namespace radiosity {
 
 namespace {
@@ -70,16 +79,35 @@ glm::dvec3 polygonCentroid(const Polygon3& p) {
 }
 
 double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const Polygon3& p) {
-  // Clip at the horizon first: Lambert's formula holds only for what the hemisphere sees.
-  glm::dvec3 v[8];
-  int m = 0;
+  // Clip at the horizon first: Lambert's formula holds only for what the hemisphere sees. Most
+  // polygons are wholly above it and are taken as they are.
+  glm::dvec3 corner[4], clipped[8];
+  double height[4];
+  bool above = true;
   for (int k = 0; k < p.n; ++k) {
-    const glm::dvec3 a = p.v[k] - point, b = p.v[(k + 1) % p.n] - point;
-    const double da = glm::dot(a, normal), db = glm::dot(b, normal);
-    if (da >= 0) v[m++] = a;
-    if ((da >= 0) != (db >= 0)) v[m++] = a + (da / (da - db)) * (b - a);
+    corner[k] = p.v[k] - point;
+    height[k] = glm::dot(corner[k], normal);
+    above = above && height[k] >= 0;
   }
-  if (m < 3) return 0;
+  const glm::dvec3* v = corner;
+  int m = p.n;
+  if (!above) {
+    m = 0;
+    for (int k = 0; k < p.n; ++k) {
+      const int next = k + 1 < p.n ? k + 1 : 0;
+      const glm::dvec3 &a = corner[k], &b = corner[next];
+      const double da = height[k], db = height[next];
+      if (da >= 0) clipped[m++] = a;
+      if ((da >= 0) != (db >= 0)) clipped[m++] = a + (da / (da - db)) * (b - a);
+    }
+    v = clipped;
+    if (m < 3) return 0;
+  }
+  const double sum = m <= 4 ? contourSum(v, m, normal) : contourSumReference(v, m, normal);
+  return std::abs(sum) / (2 * std::numbers::pi);
+}
+
+double contourSumReference(const glm::dvec3* v, int m, const glm::dvec3& normal) {
   double sum = 0;
   for (int k = 0; k < m; ++k) {
     // The edge's angle and its great circle's normal do not depend on the lengths of a and b:
@@ -92,7 +120,67 @@ double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const P
     // The polynomial atan2 (2e-8 radians): this sum runs for most receivers of every shot.
     sum += mesher::fastAtan2(s, glm::dot(a, b)) * glm::dot(normal, c) / s;
   }
-  return std::abs(sum) / (2 * std::numbers::pi);
+  return sum;
+}
+
+namespace {
+
+// The edges of a triangle or quad in the four lanes of AVX2, every operation the reference's, in
+// its order and unfused, so the sum has the same bits: the runs use either interchangeably.
+#if WALKRAD_CONTOUR_AVX2
+[[gnu::target("avx2")]] double contourSumAvx2(const glm::dvec3* v, int m, const glm::dvec3& normal) {
+  // Lane k holds edge k, from corner a = v[k] to b = v[k + 1]; a triangle's fourth lane is empty
+  // (a = b = 0), whose s == 0 drops it as the reference does.
+  const glm::dvec3 zero{0};
+  const glm::dvec3& a3 = m == 4 ? v[3] : zero;
+  const glm::dvec3& b2 = m == 4 ? v[3] : v[0];
+  const glm::dvec3& b3 = m == 4 ? v[0] : zero;
+  const __m256d ax = _mm256_set_pd(a3.x, v[2].x, v[1].x, v[0].x), bx = _mm256_set_pd(b3.x, b2.x, v[2].x, v[1].x);
+  const __m256d ay = _mm256_set_pd(a3.y, v[2].y, v[1].y, v[0].y), by = _mm256_set_pd(b3.y, b2.y, v[2].y, v[1].y);
+  const __m256d az = _mm256_set_pd(a3.z, v[2].z, v[1].z, v[0].z), bz = _mm256_set_pd(b3.z, b2.z, v[2].z, v[1].z);
+  // c = cross(a, b), s = length(c), dot(a, b), dot(normal, c), as glm computes them.
+  const __m256d cx = _mm256_sub_pd(_mm256_mul_pd(ay, bz), _mm256_mul_pd(by, az));
+  const __m256d cy = _mm256_sub_pd(_mm256_mul_pd(az, bx), _mm256_mul_pd(bz, ax));
+  const __m256d cz = _mm256_sub_pd(_mm256_mul_pd(ax, by), _mm256_mul_pd(bx, ay));
+  const __m256d s = _mm256_sqrt_pd(
+      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(cx, cx), _mm256_mul_pd(cy, cy)), _mm256_mul_pd(cz, cz)));
+  const __m256d x = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ax, bx), _mm256_mul_pd(ay, by)), _mm256_mul_pd(az, bz));
+  const __m256d nc = _mm256_add_pd(
+      _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(normal.x), cx), _mm256_mul_pd(_mm256_set1_pd(normal.y), cy)),
+      _mm256_mul_pd(_mm256_set1_pd(normal.z), cz));
+  // mesher::fastAtan2(s, x) for s >= 0: z is the smaller of s and |x| over the larger.
+  const __m256d zeroes = _mm256_setzero_pd();
+  const __m256d absX = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
+  const __m256d steep = _mm256_cmp_pd(s, absX, _CMP_GT_OQ);
+  const __m256d z = _mm256_div_pd(_mm256_blendv_pd(s, absX, steep), _mm256_blendv_pd(absX, s, steep));
+  const __m256d z2 = _mm256_mul_pd(z, z);
+  static constexpr double kAtan[] = {-0.3333314528, 0.1999355085, -0.1420889944, 0.1065626393,
+                                     -0.0752896400, 0.0429096138, -0.0161657367, 0.0028662257};
+  __m256d inner = _mm256_mul_pd(z2, _mm256_set1_pd(kAtan[7]));
+  for (int k = 6; k >= 0; --k) inner = _mm256_mul_pd(z2, _mm256_add_pd(_mm256_set1_pd(kAtan[k]), inner));
+  const __m256d atanZ = _mm256_mul_pd(z, _mm256_add_pd(_mm256_set1_pd(1.0), inner));
+  const __m256d angle = _mm256_blendv_pd(atanZ, _mm256_sub_pd(_mm256_set1_pd(std::numbers::pi / 2), atanZ), steep);
+  const __m256d atan2 = _mm256_blendv_pd(angle, _mm256_sub_pd(_mm256_set1_pd(std::numbers::pi), angle),
+                                         _mm256_cmp_pd(x, zeroes, _CMP_LT_OQ));
+  // Empty edges (s == 0) add nothing, as the reference skips them.
+  const __m256d terms = _mm256_blendv_pd(_mm256_div_pd(_mm256_mul_pd(atan2, nc), s), zeroes,
+                                         _mm256_cmp_pd(s, zeroes, _CMP_EQ_OQ));
+  alignas(32) double lane[4];
+  _mm256_store_pd(lane, terms);
+  double sum = 0;
+  for (double t : lane) sum += t;
+  return sum;
+}
+#endif
+
+}  // namespace
+
+double contourSum(const glm::dvec3* v, int m, const glm::dvec3& normal) {
+#if WALKRAD_CONTOUR_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2 && (m == 3 || m == 4)) return contourSumAvx2(v, m, normal);
+#endif
+  return contourSumReference(v, m, normal);
 }
 
 Quadrature gaussRule(const Polygon3& p) {
@@ -127,6 +215,12 @@ Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal) {
   r.offset = glm::dot(r.normal, r.centre);
   r.area = polygonArea(p);
   r.rule = gaussRule(p);
+  for (int k = 0; k < r.rule.n; ++k) {
+    r.lanes.x[k] = r.rule.point[k].x;
+    r.lanes.y[k] = r.rule.point[k].y;
+    r.lanes.z[k] = r.rule.point[k].z;
+    r.lanes.weight[k] = r.rule.weight[k];
+  }
   return r;
 }
 
@@ -135,6 +229,10 @@ double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const 
   const double above = glm::dot(toward, normal);
   if (above < r.radius || glm::dot(toward, toward) < kGaussReceiverRatio * kGaussReceiverRatio * r.radius * r.radius)
     return pointToPolygon(point, normal, r.polygon);
+  return gaussSum(point, normal, r) * r.area / std::numbers::pi;
+}
+
+double gaussSumReference(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
   // cos at the point x cos at the receiver / (pi d^2), each cosine a dot over d.
   double sum = 0;
   for (int k = 0; k < r.rule.n; ++k) {
@@ -142,7 +240,45 @@ double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const 
     const double d2 = glm::dot(d, d);
     sum += r.rule.weight[k] * glm::dot(d, normal) * std::abs(glm::dot(d, r.normal)) / (d2 * d2);
   }
-  return sum * r.area / std::numbers::pi;
+  return sum;
+}
+
+namespace {
+
+#if WALKRAD_CONTOUR_AVX2
+// The reference's operations in its order, unfused, a Gauss point per lane; a triangle's empty
+// fourth lane is dropped as the reference never visits it.
+[[gnu::target("avx2")]] double gaussSumAvx2(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
+  const __m256d dx = _mm256_sub_pd(_mm256_load_pd(r.lanes.x), _mm256_set1_pd(point.x));
+  const __m256d dy = _mm256_sub_pd(_mm256_load_pd(r.lanes.y), _mm256_set1_pd(point.y));
+  const __m256d dz = _mm256_sub_pd(_mm256_load_pd(r.lanes.z), _mm256_set1_pd(point.z));
+  const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+  const __m256d up = _mm256_add_pd(
+      _mm256_add_pd(_mm256_mul_pd(dx, _mm256_set1_pd(normal.x)), _mm256_mul_pd(dy, _mm256_set1_pd(normal.y))),
+      _mm256_mul_pd(dz, _mm256_set1_pd(normal.z)));
+  const __m256d facing = _mm256_andnot_pd(
+      _mm256_set1_pd(-0.0),
+      _mm256_add_pd(
+          _mm256_add_pd(_mm256_mul_pd(dx, _mm256_set1_pd(r.normal.x)), _mm256_mul_pd(dy, _mm256_set1_pd(r.normal.y))),
+          _mm256_mul_pd(dz, _mm256_set1_pd(r.normal.z))));
+  const __m256d terms = _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(_mm256_load_pd(r.lanes.weight), up), facing),
+                                      _mm256_mul_pd(d2, d2));
+  alignas(32) double lane[4];
+  _mm256_store_pd(lane, terms);
+  double sum = 0;
+  for (int k = 0; k < r.rule.n; ++k) sum += lane[k];
+  return sum;
+}
+#endif
+
+}  // namespace
+
+double gaussSum(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
+#if WALKRAD_CONTOUR_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return gaussSumAvx2(point, normal, r);
+#endif
+  return gaussSumReference(point, normal, r);
 }
 
 double distanceToReceiver(const glm::dvec3& point, const Receiver& r, double enough) {

@@ -25,6 +25,14 @@ glm::dvec3 polygonCentroid(const Polygon3& p);  // area-weighted
 // 0 when p lies on or below the horizon. Either winding.
 double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const Polygon3& p);
 
+// Lambert's sum over the edges of the polygon v[0, m) (corners relative to the point, on or
+// above its horizon): each edge's angle times the cosine between `normal` and the normal of the
+// edge's great circle; +-2 pi times the form factor, by the winding. contourSum takes a
+// triangle's or quad's edges four at a time where the CPU can (AVX2), with the same bits as the
+// plain loop of contourSumReference.
+double contourSum(const glm::dvec3* v, int m, const glm::dvec3& normal);
+double contourSumReference(const glm::dvec3* v, int m, const glm::dvec3& normal);
+
 // A rule exact for quadratics over a polygon: 2 x 2 Gauss points on a quad's bilinear map, the
 // 3-point rule on a triangle. Weights are shares of the area and sum to 1.
 struct Quadrature {
@@ -45,6 +53,11 @@ struct Receiver {
   double offset = 0;
   double area = 0;
   Quadrature rule;
+  // The rule's points and weights by coordinate, for the vector lanes (a triangle's fourth
+  // weight is 0).
+  struct RuleLanes {
+    alignas(32) double x[4], y[4], z[4], weight[4];
+  } lanes{};
 };
 Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal);
 
@@ -58,6 +71,12 @@ constexpr double kGaussReceiverRatio = 4;
 // The form factor from a differential area at `point` with unit `normal` to `r`, unoccluded:
 // by r's Gauss rule where kGaussReceiverRatio allows, else pointToPolygon.
 double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
+
+// The sum over r's Gauss points of weight x cos at the point x |cos at r| / d^2 (the factor from
+// `point` by r's rule, over area / pi): gaussSum four points in AVX2 lanes where the CPU can,
+// with the same bits as the plain loop of gaussSumReference.
+double gaussSum(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
+double gaussSumReference(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r);
 
 // The distance from `point` to r's polygon, or at least `enough` when it is that far: the
 // distance to r's bounding sphere answers when that is at least `enough`.

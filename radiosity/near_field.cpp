@@ -1,5 +1,6 @@
 #include "radiosity/near_field.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -40,6 +41,7 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
   PatchTree tree;
   tree.x = x;
   tree.y = y;
+  tree.z = glm::cross(x, y);
   const auto centroid = [&](uint32_t first, uint32_t last) {
     double a = 0;
     glm::dvec3 c{0};
@@ -59,9 +61,16 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
     n.first = first;
     n.last = last;
     n.centre = centroid(first, last);
+    n.low = glm::dvec3(INFINITY);
+    n.high = glm::dvec3(-INFINITY);
     for (uint32_t k = first; k < last; ++k) {
       const Polygon3& p = receivers[elements[k]].polygon;
-      for (int i = 0; i < p.n; ++i) n.radius = std::max(n.radius, glm::length(p.v[i] - n.centre));
+      for (int i = 0; i < p.n; ++i) {
+        n.radius = std::max(n.radius, glm::length(p.v[i] - n.centre));
+        const glm::dvec3 d = p.v[i] - tree.origin, local{glm::dot(d, x), glm::dot(d, y), glm::dot(d, tree.z)};
+        n.low = glm::min(n.low, local);
+        n.high = glm::max(n.high, local);
+      }
     }
   };
 
@@ -156,6 +165,9 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
 void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
                      std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
                      double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back) {
+  // Heights over r's plane in the tree's coordinates: at the origin, and per unit along each axis.
+  const double originHeight = glm::dot(r.normal, tree.origin) - r.offset;
+  const glm::dvec3 slope{glm::dot(r.normal, tree.x), glm::dot(r.normal, tree.y), glm::dot(r.normal, tree.z)};
   const auto visit = [&](const auto& self, uint32_t n) -> void {
     const NodeLight& l = light[n];
     if (l.weight == glm::dvec3(0)) return;  // nothing to shoot there (under a solid, say)
@@ -171,7 +183,11 @@ void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, st
     // factor has a kink there that a few points would smooth over.
     const double distance = glm::length(node.centre - r.centre) - r.radius;
     const bool far = node.radius * farRatio <= distance;
-    const bool cut = std::abs(glm::dot(r.normal, node.centre) - r.offset) < node.radius;
+    // Corners on r's plane (to rounding) are on neither side.
+    const glm::dvec3 middle = 0.5 * (node.low + node.high), half = 0.5 * (node.high - node.low);
+    const double height = originHeight + glm::dot(slope, middle), spread = glm::dot(glm::abs(slope), half);
+    const double touch = 1e-9 * node.radius;
+    const bool cut = height - spread < -touch && height + spread > touch;
     if (cut || (!far && node.radius * ratio > distance)) {
       for (uint32_t c = node.child; c < node.child + node.children; ++c) self(self, c);
       return;

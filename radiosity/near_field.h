@@ -26,13 +26,16 @@ struct PatchTree {
     uint32_t child = 0, children = 0;
     glm::dvec3 centre{0};  // area centroid
     double radius = 0;     // of the sphere about centre that holds every corner
+    // The box that holds every corner, in the tree's coordinates (origin + u x + v y + w z, z the
+    // patch's normal): the heights of the corners over a receiver's plane lie within its image.
+    glm::dvec3 low{0}, high{0};
   };
   std::vector<Node> nodes;
   // Per element (in the patch's order): its centroid in plane coordinates (origin + u x + v y) and
   // its second moments of area about the centroid over its area (uu, uv, vv).
   std::vector<glm::dvec2> plane;
   std::vector<glm::dvec3> spread;
-  glm::dvec3 origin{0}, x{0}, y{0};
+  glm::dvec3 origin{0}, x{0}, y{0}, z{0};
 };
 
 // Builds the tree over a patch's elements (indices into `receivers`, all in one plane with unit
@@ -63,7 +66,9 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
 // r's bounding sphere than `farRatio` times its radius counts by its mean, one farther than
 // `ratio` times by its four points, others by their children; a leaf's element by areaToPolygon
 // with the same ratios and `splits`. `elements` are
-// the patch's, in tree order; `normal` is the patch's.
+// the patch's, in tree order; `normal` is the patch's. A node is cut by r's plane when its corners
+// lie on both sides of it (by its box), not merely near it: a patch touching r's plane (a floor
+// patch at the foot of a wall) sees r's front from all of it.
 void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
                      std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
                      double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back);
