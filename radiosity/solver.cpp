@@ -939,10 +939,10 @@ bool Solver::correct() {
 
 // A patch that did not change, shooting from the same point before and now, sees the same
 // except where the changed elements are seen (windowed_correction.h). Its take-back and resend
-// differ only there: both frames are rendered in that window, grown over the receivers seen in
-// it so that their pixel counts and item-buffer targets are whole; the receivers whose pixels
-// or targets differ between the frames, and the changed ones, are judged in both; and what each
-// gets now less what it got is deposited. Energy: the frames' factors of those receivers are
+// differ only there: both frames are rendered in that window; the receivers whose pixels or
+// targets differ between them, and the changed ones, are judged in both, the frame before
+// rendered again in the window grown over those of them whose pixel counts and item-buffer
+// targets must be whole; and what each gets now less what it got is deposited. Energy: the frames' factors of those receivers are
 // taken as the whole frames' would be before their energy is kept (distribute's scale, which
 // moves light between all receivers and the sky by the frame's total correction of near and
 // small receivers, here left out: at most that correction's change, a fraction of a percent
@@ -977,9 +977,9 @@ bool Solver::correctInWindow(uint32_t p) {
     const double gap = glm::length(before.centre[j] - eye) - before.radius[j];
     return gap < nearLimit || (glm::dot(before.normal[j], eye) > before.offset[j] && before.area[j] < smallLimit * kPi * gap * gap);
   };
-  cull.cull(before.spheres(), axes, eye, resolution, si, changed, whole);
-  // Before: the frame in the grown window. Now: the same outside the changed window, so only
-  // that is rendered, and the rest is before's seen through the elements' new indices.
+  cull.cull(before.spheres(), axes, eye, resolution, si, changed);
+  // First both frames in the changed window alone, to find what differs there. Now is the same
+  // as before outside it: the rest of it is before's seen through the elements' new indices.
   std::vector<uint32_t>& drawnNow = e.drawnNow;
   drawnNow.clear();
   for (uint32_t j : cull.drawn)
@@ -1009,15 +1009,69 @@ bool Solver::correctInWindow(uint32_t p) {
     out.width = f.width, out.height = f.height, out.stride = f.stride;
     return &out;
   };
-  const pxpl5::HemisphereFrame& frameBefore = *render(before, cull.drawn, cull.window, 0);
+  const pxpl5::HemisphereFrame* frameBefore = render(before, cull.drawn, changed, 0);
   pxpl5::HemisphereFrame& frameNow = *render(now, drawnNow, changed, 1);
+
+  // Judged again: the changed elements, and the others whose pixels or targets differ.
+  const size_t stride = static_cast<size_t>(frameNow.stride);
+  const size_t changedWidth = static_cast<size_t>(changed.x1 - changed.x0);
+  e.differs.assign(static_cast<size_t>(pixelsOf(changed)), 0);
+  if (e.marked.size() < before.receiver.size()) e.marked.resize(before.receiver.size(), 0);
+  const uint32_t mark = ++e.correction;
+  for (int y = changed.y0; y < changed.y1; ++y)
+    for (int x = changed.x0; x < changed.x1; ++x) {
+      const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+      const uint32_t b = e.items[0][at], n = e.items[1][at];
+      const bool changedB = b != pxpl5::kNoValue && e.changedBefore[b], changedN = n != pxpl5::kNoValue && e.changedNow[n];
+      const uint32_t bNow = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
+      if (!changedB && !changedN && bNow == n) continue;
+      e.differs[static_cast<size_t>(y - changed.y0) * changedWidth + static_cast<size_t>(x - changed.x0)] = 1;
+      if (b != pxpl5::kNoValue && !changedB) e.marked[b] = mark;
+      if (n != pxpl5::kNoValue && !changedN) e.marked[e.elementBefore[n]] = mark;
+    }
+  std::vector<uint32_t>&judgedBefore = e.judged[0], &judgedNow = e.judged[1];
+  judgedBefore.clear();
+  judgedNow.clear();
+  for (uint32_t j : cull.judged) {
+    if (e.changedBefore[j]) continue;
+    if (e.marked[j] != mark) {
+      // Only near and small receivers read items at their targets; the others' factors are
+      // counts, unchanged when none of their pixels is.
+      if (!whole(j)) continue;
+      for (size_t k = 0; k < State::kTargets && e.marked[j] != mark; ++k) {
+        int x = 0, y = 0;
+        if (!targetPixel(axes, eye, resolution, before.targets[State::kTargets * j + k], x, y)) continue;
+        if (x < changed.x0 || x >= changed.x1 || y < changed.y0 || y >= changed.y1) continue;
+        if (e.differs[static_cast<size_t>(y - changed.y0) * changedWidth + static_cast<size_t>(x - changed.x0)]) e.marked[j] = mark;
+      }
+      if (e.marked[j] != mark) continue;
+    }
+    judgedBefore.push_back(j);
+    judgedNow.push_back(e.elementNow[j]);
+  }
+  for (uint32_t j : e.changed[0])
+    if (before.surfaceOf[j] != si) judgedBefore.push_back(j);
+  for (uint32_t i : e.changed[1])
+    if (now.surfaceOf[i] != si) judgedNow.push_back(i);
+  std::sort(judgedBefore.begin(), judgedBefore.end());
+  std::sort(judgedNow.begin(), judgedNow.end());
+
+  // Then before again in the window grown over the judged receivers whose judgement reads more
+  // than their count in it (the changed ones lie within it): only those need to be whole. The
+  // receivers seen there that are not judged, which the grown window would hold too, do not.
+  pxpl5::PixelRect grown = changed;
+  for (uint32_t j : judgedBefore)
+    if (!e.changedBefore[j] && whole(j)) grown = unite(grown, cull.rectOf(j));
+  if (!contains(changed, grown)) {
+    cull.drawWithin(grown);
+    frameBefore = render(before, cull.drawn, grown, 0);
+  }
   if (e.pixelShare == 0) {
     // Every disk pixel weighs the same: pxpl5's share, one over their number.
     const auto disk = std::count_if(frameNow.weights.begin(), frameNow.weights.end(), [](float w) { return w > 0; });
     e.pixelShare = 1.0 / static_cast<double>(disk);
   }
   {
-    const size_t stride = static_cast<size_t>(frameNow.stride);
     std::vector<uint32_t>& items = e.items[1];
     std::vector<uint32_t>& count = e.pixelCount;
     if (count.size() < now.receiver.size()) count.resize(now.receiver.size(), 0);
@@ -1047,54 +1101,12 @@ bool Solver::correctInWindow(uint32_t p) {
       if (glm::dot(s.normal[k.id], eye) <= s.offset[k.id]) share += k.factor;
     return share;
   };
-  const double centreBacks = before.pointBackShare[p] - backs(before, frameBefore) + backs(now, frameNow);
+  const double centreBacks = before.pointBackShare[p] - backs(before, *frameBefore) + backs(now, frameNow);
   if (!now.pointChosen[q]) {
     if (centreBacks > kMostBacks) return false;
     now.pointChosen[q] = 1;
     now.pointBackShare[q] = centreBacks;
   }
-
-  // Judged again: the changed elements, and the others whose pixels or targets differ.
-  const size_t stride = static_cast<size_t>(frameBefore.stride);
-  const pxpl5::PixelRect inside{changed.x0, changed.y0, std::min(changed.x1, cull.window.x1), std::min(changed.y1, cull.window.y1)};
-  const size_t insideWidth = static_cast<size_t>(std::max(0, inside.x1 - inside.x0));
-  e.differs.assign(static_cast<size_t>(pixelsOf(inside)), 0);
-  if (e.marked.size() < before.receiver.size()) e.marked.resize(before.receiver.size(), 0);
-  const uint32_t mark = ++e.correction;
-  for (int y = inside.y0; y < inside.y1; ++y)
-    for (int x = inside.x0; x < inside.x1; ++x) {
-      const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
-      const uint32_t b = e.items[0][at], n = e.items[1][at];
-      const bool changedB = b != pxpl5::kNoValue && e.changedBefore[b], changedN = n != pxpl5::kNoValue && e.changedNow[n];
-      const uint32_t bNow = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
-      if (!changedB && !changedN && bNow == n) continue;
-      e.differs[static_cast<size_t>(y - inside.y0) * insideWidth + static_cast<size_t>(x - inside.x0)] = 1;
-      if (b != pxpl5::kNoValue && !changedB) e.marked[b] = mark;
-      if (n != pxpl5::kNoValue && !changedN) e.marked[e.elementBefore[n]] = mark;
-    }
-  std::vector<uint32_t>&judgedBefore = e.judged[0], &judgedNow = e.judged[1];
-  judgedBefore.clear();
-  judgedNow.clear();
-  for (uint32_t j : cull.judged) {
-    if (e.changedBefore[j]) continue;
-    if (e.marked[j] != mark) {
-      for (size_t k = 0; k < State::kTargets && e.marked[j] != mark; ++k) {
-        int x = 0, y = 0;
-        if (!targetPixel(axes, eye, resolution, before.targets[State::kTargets * j + k], x, y)) continue;
-        if (x < inside.x0 || x >= inside.x1 || y < inside.y0 || y >= inside.y1) continue;
-        if (e.differs[static_cast<size_t>(y - inside.y0) * insideWidth + static_cast<size_t>(x - inside.x0)]) e.marked[j] = mark;
-      }
-      if (e.marked[j] != mark) continue;
-    }
-    judgedBefore.push_back(j);
-    judgedNow.push_back(e.elementNow[j]);
-  }
-  for (uint32_t j : e.changed[0])
-    if (before.surfaceOf[j] != si) judgedBefore.push_back(j);
-  for (uint32_t i : e.changed[1])
-    if (now.surfaceOf[i] != si) judgedNow.push_back(i);
-  std::sort(judgedBefore.begin(), judgedBefore.end());
-  std::sort(judgedNow.begin(), judgedNow.end());
 
   // Their factors before and now, from the same elements lit alike.
   const glm::dvec3 S = before.shot[p];
@@ -1107,7 +1119,7 @@ bool Solver::correctInWindow(uint32_t p) {
   }
   // The scales of p's last whole frame, for both: the window changes them by the change of its
   // judged receivers' corrections only.
-  before.listedFactors(p, frameBefore, judgedBefore, before.patchScale[p], e.factors[0]);
+  before.listedFactors(p, *frameBefore, judgedBefore, before.patchScale[p], e.factors[0]);
   now.listedFactors(q, frameNow, judgedNow, before.patchScale[p], e.factors[1]);
   now.patchScale[q] = before.patchScale[p];
 

@@ -50,6 +50,10 @@ pxpl5::PixelRect unite(const pxpl5::PixelRect& a, const pxpl5::PixelRect& b) {
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
+bool contains(const pxpl5::PixelRect& outer, const pxpl5::PixelRect& inner) {
+  return inner.x0 >= outer.x0 && inner.y0 >= outer.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
+}
+
 bool overlaps(const pxpl5::PixelRect& a, const pxpl5::PixelRect& b) {
   return !a.empty() && !b.empty() && a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
@@ -63,44 +67,42 @@ const pxpl5::PixelRect& WindowCull::rectOf(uint32_t j) {
 }
 
 void WindowCull::cull(const SceneSpheres& scene, const HemisphereAxes& axes, const glm::dvec3& eye, int resolution,
-                      uint32_t skipSurface, const pxpl5::PixelRect& changed, const std::function<bool(uint32_t)>& whole) {
+                      uint32_t skipSurface, const pxpl5::PixelRect& changed) {
   const size_t elements = scene.centre.size(), patches = scene.patchCentre.size();
-  scene_ = scene, axes_ = axes, eye_ = eye, resolution_ = resolution;
+  scene_ = scene, axes_ = axes, eye_ = eye, resolution_ = resolution, skipSurface_ = skipSurface;
   if (rect_.size() < elements) rect_.resize(elements), rectMade_.resize(elements, 0), drawnMark_.resize(elements, 0);
   ++generation_;
   judged.clear();
-  drawn.clear();
   patchRect_.resize(patches);
-  const auto contains = [](const pxpl5::PixelRect& outer, const pxpl5::PixelRect& inner) {
-    return inner.x0 >= outer.x0 && inner.y0 >= outer.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
-  };
 
-  // Patches first, then the elements of those that reach the window (all of a patch within it):
-  // the elements whose pixels may lie in the changed window are judged again, and the window
-  // grows over those whose judgement reads more than their count.
-  window = changed;
+  // Patches first, then the elements of those that reach the window (all of a patch within it).
   for (size_t p = 0; p < patches; ++p) {
     patchRect_[p] = sphereWindow(axes, eye, resolution, scene.patchCentre[p], scene.patchRadius[p]);
     if (!overlaps(patchRect_[p], changed)) continue;
     const bool inside = contains(changed, patchRect_[p]);
     for (uint32_t k = scene.patchFirst[p]; k < scene.patchLast[p]; ++k) {
       const uint32_t j = scene.patchElements[k];
-      if (scene.surface[j] == skipSurface || (!inside && !overlaps(rectOf(j), changed))) continue;
-      judged.push_back(j);
-      if (!inside && whole(j)) window = unite(window, rect_[j]);
+      if (scene.surface[j] != skipSurface && (inside || overlaps(rectOf(j), changed))) judged.push_back(j);
     }
   }
-  // Every element that may be drawn in the grown window, in the elements' order.
-  for (size_t p = 0; p < patches; ++p) {
+  drawWithin(changed);
+}
+
+void WindowCull::drawWithin(const pxpl5::PixelRect& grown) {
+  // Every element that may be drawn in the window, in the elements' order.
+  window = grown;
+  drawn.clear();
+  const uint32_t mark = ++drawGeneration_;
+  for (size_t p = 0; p < patchRect_.size(); ++p) {
     if (!overlaps(patchRect_[p], window)) continue;
     const bool inside = contains(window, patchRect_[p]);
-    for (uint32_t k = scene.patchFirst[p]; k < scene.patchLast[p]; ++k) {
-      const uint32_t j = scene.patchElements[k];
-      if (scene.surface[j] != skipSurface && (inside || overlaps(rectOf(j), window))) drawnMark_[j] = generation_;
+    for (uint32_t k = scene_.patchFirst[p]; k < scene_.patchLast[p]; ++k) {
+      const uint32_t j = scene_.patchElements[k];
+      if (scene_.surface[j] != skipSurface_ && (inside || overlaps(rectOf(j), window))) drawnMark_[j] = mark;
     }
   }
-  for (uint32_t j = 0; j < elements; ++j)
-    if (drawnMark_[j] == generation_) drawn.push_back(j);
+  for (uint32_t j = 0; j < static_cast<uint32_t>(scene_.centre.size()); ++j)
+    if (drawnMark_[j] == mark) drawn.push_back(j);
 }
 
 bool targetPixel(const HemisphereAxes& axes, const glm::dvec3& eye, int resolution, const glm::dvec3& target, int& i,

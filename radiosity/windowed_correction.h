@@ -17,7 +17,6 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
-#include <functional>
 #include <span>
 #include <vector>
 
@@ -33,6 +32,7 @@ pxpl5::PixelRect sphereWindow(const HemisphereAxes& axes, const glm::dvec3& eye,
 // The smallest rectangle holding both; an empty one is left out.
 pxpl5::PixelRect unite(const pxpl5::PixelRect& a, const pxpl5::PixelRect& b);
 bool overlaps(const pxpl5::PixelRect& a, const pxpl5::PixelRect& b);
+bool contains(const pxpl5::PixelRect& outer, const pxpl5::PixelRect& inner);
 inline int64_t pixelsOf(const pxpl5::PixelRect& r) {
   return r.empty() ? 0 : int64_t{r.x1 - r.x0} * int64_t{r.y1 - r.y0};
 }
@@ -49,18 +49,16 @@ struct SceneSpheres {
 };
 
 // Which elements a window correction looks at, from the window `changed` around the elements
-// that changed: the elements whose pixels may lie in it (`judged`: they are judged again) and,
-// so that their pixel counts and item-buffer targets are whole, the window grown over their
-// windows (`window`), and every element that may be drawn there (`drawn`, ascending). Elements
-// of surface `skipSurface` (the shooter's plane: not drawn, not judged) are left out.
-// `whole(j)`: whether element j's judgement may read more of the frame than its pixels' count in
-// the window (its whole count, or items at its targets), so the window must hold all of it; for
-// the others (factors that are pixel counts) the difference of the window's counts is the
-// difference of the whole frames'.
+// that changed. cull: the elements whose pixels may lie in `changed` (`judged`: candidates to be
+// judged again) and those that may be drawn there (`drawn`, ascending), `window` = `changed`.
+// drawWithin: `window` and `drawn` for a larger window (grown over the receivers that are judged
+// again, so that their pixel counts and item-buffer targets are whole). Elements of surface
+// `skipSurface` (the shooter's plane: not drawn, not judged) are left out.
 class WindowCull {
  public:
   void cull(const SceneSpheres& scene, const HemisphereAxes& axes, const glm::dvec3& eye, int resolution,
-            uint32_t skipSurface, const pxpl5::PixelRect& changed, const std::function<bool(uint32_t)>& whole);
+            uint32_t skipSurface, const pxpl5::PixelRect& changed);
+  void drawWithin(const pxpl5::PixelRect& grown);
   // Element j's sphereWindow from the last cull's eye (computed once per cull).
   const pxpl5::PixelRect& rectOf(uint32_t j);
 
@@ -72,9 +70,10 @@ class WindowCull {
   HemisphereAxes axes_;
   glm::dvec3 eye_{0};
   int resolution_ = 0;
-  uint32_t generation_ = 0;
+  uint32_t generation_ = 0, drawGeneration_ = 0;
+  uint32_t skipSurface_ = 0;
   std::vector<pxpl5::PixelRect> rect_, patchRect_;
-  std::vector<uint32_t> rectMade_, drawnMark_;  // per element, the cull that made its rect, that drew it
+  std::vector<uint32_t> rectMade_, drawnMark_;  // per element, the cull that made its rect, the drawWithin that drew it
 };
 
 // The pixel of the hemisphere image whose item the item buffer reads for `target` seen from
