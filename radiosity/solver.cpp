@@ -517,15 +517,20 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
 
 void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame) {
   if (!pointChosen[p] || (p < keptShots.size() && !keptShots[p].chunkStart.empty())) return;
+  // Sized before anything is copied: once the budget is spent most shots are not kept.
+  size_t judged = 0;
+  for (const ReceiverChunk& chunk : chunks) judged += chunk.judged.size();
+  const size_t bytes = frame.factors.size() * sizeof(pxpl5::IdFactor) + judged * sizeof(Judged) + (kReceiverChunks + 1) * sizeof(uint32_t);
+  if (keptBytes + bytes > settings.shotCacheBytes) return;
   KeptShot record;
   record.factors.assign(frame.factors.begin(), frame.factors.end());
+  record.judged.reserve(judged);
   record.total = frame.total;
   record.chunkStart.push_back(0);
   for (const ReceiverChunk& chunk : chunks) {
     record.judged.insert(record.judged.end(), chunk.judged.begin(), chunk.judged.end());
     record.chunkStart.push_back(static_cast<uint32_t>(record.judged.size()));
   }
-  if (keptBytes + record.bytes() > settings.shotCacheBytes) return;
   if (keptShots.size() <= p) keptShots.resize(unshot.size());
   keptBytes += record.bytes();
   keptShots[p] = std::move(record);
