@@ -77,12 +77,20 @@ struct SolverSettings {
   // hemisphere where the changed elements are seen (Solver::edit): about the cost of what
   // changed. Off: every correction takes back and sends again all of the patch's light.
   bool windowedCorrections = true;
+  // A patch shoots from the same point over the same geometry every time, so its first shot's
+  // frame (pixel factors) and the judgement of its near and small receivers (visibilities,
+  // analytic factors) are kept and reused when it shoots again; only the near receivers'
+  // integrals, which weigh its elements by their unshot light, are done again. Results are the
+  // same bit for bit. Kept for the patches that shoot first until this many bytes are held;
+  // 0 keeps none.
+  size_t shotCacheBytes = size_t{256} << 20;
 };
 
 // Counters since construction. Powers are per channel (see the units above).
 struct Stats {
   uint64_t shots = 0;
   uint64_t frames = 0;             // hemisphere frames rendered
+  uint64_t reusedShots = 0;        // shots that reused their patch's kept frame and judgement
   uint64_t nearReceivers = 0;      // receiver factors integrated over the shooter's area
   uint64_t smallReceivers = 0;     // receiver factors computed analytically for their size
   uint64_t splitPatches = 0;       // patches of several elements whose centre was inside a solid,

@@ -130,6 +130,15 @@ struct Solver::State {
     uint32_t element;
     glm::dvec3 front, back;  // per channel
   };
+  // What judging a near or small receiver found that does not depend on the light: a small one's
+  // factor, a near one's visibility from the centre (its integral weighs the shooter's elements
+  // by their unshot light, so it is done in every shot).
+  struct Judged {
+    enum Kind : uint32_t { kSmallFront, kSmallBack, kNear, kNearBehind };
+    uint32_t element;
+    Kind kind;
+    double value;
+  };
   std::vector<glm::dvec3> shares;
   std::vector<NodeLight> nodeLight;
   // The receivers of a shot are judged in a fixed number of chunks, whatever the number of
@@ -139,6 +148,7 @@ struct Solver::State {
   // half of it, 256 leave it 5% longer.
   static constexpr size_t kReceiverChunks = 256;
   struct ReceiverChunk {
+    std::vector<Judged> judged;
     std::vector<NewFactor> factors;
     double replacedPixels = 0;
     glm::dvec3 replacedNew{0};
@@ -146,6 +156,20 @@ struct Solver::State {
   };
   std::array<ReceiverChunk, kReceiverChunks> chunks;
   std::array<std::vector<NewFactor>, kReceiverChunks> listed;  // listedFactors' per chunk
+
+  // Per patch, its first shot's pixel factors and judged receivers, chunk by chunk
+  // (SolverSettings::shotCacheBytes); none kept while chunkStart is empty.
+  struct KeptShot {
+    std::vector<pxpl5::IdFactor> factors;
+    double total = 0;
+    std::vector<Judged> judged;
+    std::vector<uint32_t> chunkStart;  // kReceiverChunks + 1 offsets into `judged`
+    size_t bytes() const {
+      return factors.size() * sizeof(pxpl5::IdFactor) + judged.size() * sizeof(Judged) + chunkStart.size() * sizeof(uint32_t);
+    }
+  };
+  std::vector<KeptShot> keptShots;
+  size_t keptBytes = 0;
 
   double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
   Stats stats;
@@ -161,6 +185,15 @@ struct Solver::State {
   // frame (see shoot).
   void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
                       uint32_t end, ReceiverChunk& out);
+  // The same from receivers judged before (a kept shot's chunk).
+  void rejudgeReceivers(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out);
+  // Judged receivers' factors into out.factors and out.replacedNew.
+  void integrateJudged(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out);
+  // Patch p's kept shot, or null.
+  const KeptShot* keptShot(uint32_t p) const {
+    return p < keptShots.size() && pointChosen[p] && !keptShots[p].chunkStart.empty() ? &keptShots[p] : nullptr;
+  }
+  void keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame);
   double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
   std::span<uint32_t> elementsOf(uint32_t p) {
     return {patchElements.data() + patchFirst[p], patchLast[p] - patchFirst[p]};
@@ -277,6 +310,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
     patchScale.emplace_back();
     trees.emplace_back();
   }
+  if (p < keptShots.size()) keptBytes -= keptShots[p].bytes(), keptShots[p] = {};
   patchFirst[p] = first;
   patchLast[p] = last;
   const std::span<uint32_t> own = elementsOf(p);
@@ -401,12 +435,10 @@ const pxpl5::HemisphereFrame& Solver::State::frameFrom(uint32_t p, const glm::dv
 void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes,
                                    uint32_t begin, uint32_t end, ReceiverChunk& out) {
   // Sums in locals, stored once: the chunks sit side by side and are judged on different threads.
-  out.factors.clear();
+  out.judged.clear();
   double replacedPixels = 0;
-  glm::dvec3 replacedNew{0};
   uint64_t nearCount = 0, smallCount = 0;
   const uint32_t si = patchSurface[p];
-  const std::span<const uint32_t> own = elementsOf(p);
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
   const double nearLimit = settings.nearFieldRatio * patchRadius[p];
   const double smallLimit = settings.smallReceiverPixels * pixelShare;
@@ -415,7 +447,6 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
     const glm::dvec3 toward = centre[j] - eye;
     if (glm::dot(toward, eyeNormal) < -radius[j]) continue;            // wholly below the horizon
     const double gap = glm::length(toward) - radius[j];
-    NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
     if (gap < nearLimit) {
       // Visibility first: a receiver the shooter's centre cannot see needs no integral. But a
       // centre behind j's plane sees at most j's back and tells nothing of what the patch's
@@ -424,12 +455,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       // left the box's face 15% too dark.
       const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
       const bool behind = glm::dot(normal[j], eye) <= offset[j];
-      if (v > 0 || behind) {
-        patchToReceiver(trees[p], nodeLight, own, receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
-                        settings.pieceRatio, settings.maxShooterSplits, f.front, f.back);
-        if (!behind) f.front *= v;
-        f.back *= v;
-      }
+      out.judged.push_back({j, behind ? Judged::kNearBehind : Judged::kNear, v});
       ++nearCount;
     } else {
       // A far receiver whose back faces the centre gets nothing but lost light whatever its
@@ -440,22 +466,82 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
       const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded) : 0;
-      (glm::dot(normal[j], eye) > offset[j] ? f.front : f.back) = glm::dvec3(unoccluded * v);
+      out.judged.push_back({j, glm::dot(normal[j], eye) > offset[j] ? Judged::kSmallFront : Judged::kSmallBack, unoccluded * v});
       ++smallCount;
     }
-    replaced[j] = 1;
     replacedPixels += pixelFactor[j];
+  }
+  out.replacedPixels = replacedPixels;
+  out.near = nearCount;
+  out.small = smallCount;
+  integrateJudged(p, out.judged, out);
+}
+
+void Solver::State::rejudgeReceivers(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out) {
+  double replacedPixels = 0;
+  uint64_t nearCount = 0;
+  for (const Judged& k : judged) {
+    replacedPixels += pixelFactor[k.element];
+    nearCount += k.kind >= Judged::kNear;
+  }
+  out.replacedPixels = replacedPixels;
+  out.near = nearCount;
+  out.small = judged.size() - nearCount;
+  integrateJudged(p, judged, out);
+}
+
+void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out) {
+  out.factors.clear();
+  glm::dvec3 replacedNew{0};
+  const std::span<const uint32_t> own = elementsOf(p);
+  const glm::dvec3& eyeNormal = surfaces[patchSurface[p]].normal;
+  for (const Judged& k : judged) {
+    const uint32_t j = k.element;
+    NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
+    if (k.kind == Judged::kSmallFront) {
+      f.front = glm::dvec3(k.value);
+    } else if (k.kind == Judged::kSmallBack) {
+      f.back = glm::dvec3(k.value);
+    } else if (const bool behind = k.kind == Judged::kNearBehind; k.value > 0 || behind) {
+      patchToReceiver(trees[p], nodeLight, own, receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
+                      settings.pieceRatio, settings.maxShooterSplits, f.front, f.back);
+      if (!behind) f.front *= k.value;
+      f.back *= k.value;
+    }
+    replaced[j] = 1;
     replacedNew += f.front + f.back;
     out.factors.push_back(f);
   }
-  out.replacedPixels = replacedPixels;
   out.replacedNew = replacedNew;
-  out.near = nearCount;
-  out.small = smallCount;
+}
+
+void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame) {
+  if (!pointChosen[p] || (p < keptShots.size() && !keptShots[p].chunkStart.empty())) return;
+  // Sized before anything is copied: once the budget is spent most shots are not kept.
+  size_t judged = 0;
+  for (const ReceiverChunk& chunk : chunks) judged += chunk.judged.size();
+  const size_t bytes = frame.factors.size() * sizeof(pxpl5::IdFactor) + judged * sizeof(Judged) + (kReceiverChunks + 1) * sizeof(uint32_t);
+  if (keptBytes + bytes > settings.shotCacheBytes) return;
+  KeptShot record;
+  record.factors.assign(frame.factors.begin(), frame.factors.end());
+  record.judged.reserve(judged);
+  record.total = frame.total;
+  record.chunkStart.push_back(0);
+  for (const ReceiverChunk& chunk : chunks) {
+    record.judged.insert(record.judged.end(), chunk.judged.begin(), chunk.judged.end());
+    record.chunkStart.push_back(static_cast<uint32_t>(record.judged.size()));
+  }
+  if (keptShots.size() <= p) keptShots.resize(unshot.size());
+  keptBytes += record.bytes();
+  keptShots[p] = std::move(record);
 }
 
 void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
-  const pxpl5::HemisphereFrame& frame = chosen ? *chosen : frameFrom(p, patchCentre[p]);
+  // A kept shot needs no frame (distribute reads it).
+  const KeptShot* before = chosen ? nullptr : keptShot(p);
+  const pxpl5::HemisphereFrame* frame = chosen || before ? chosen : &frameFrom(p, patchCentre[p]);
+  const std::span<const pxpl5::IdFactor> seen = frame ? std::span<const pxpl5::IdFactor>(frame->factors)
+                                                           : before ? std::span<const pxpl5::IdFactor>(before->factors) : std::span<const pxpl5::IdFactor>();
   // Overshooting (overshoot.h): the patch also sends what it will reflect of the unshot light it
   // sees, and keeps that much negative unshot light for the light to come back to. At most its
   // unshot light, and only where that is positive: a patch is never left with more light than
@@ -464,7 +550,7 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   glm::dvec3 over{0};
   if (settings.overshoot) {
     const glm::dvec3 expected = surfaces[patchSurface[p]].reflectance *
-                                gatherUnshot(frame.factors, patchCentre[p], {normal, offset, surfaceOf}, elementUnshot);
+                                gatherUnshot(seen, patchCentre[p], {normal, offset, surfaceOf}, elementUnshot);
     for (int c = 0; c < 3; ++c) over[c] = std::clamp(expected[c], 0.0, std::max(unshot[p][c], 0.0));
   }
   const glm::dvec3 dB = unshot[p] + over;
@@ -483,7 +569,7 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   shot[p] += dB;
   history.push_back({p, dB});
   // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
-  const glm::dvec3 escaped = distribute(p, &frame, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
+  const glm::dvec3 escaped = distribute(p, frame, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
     receive(j, patchArea[p], dB, front, back);
   });
   stats.escapedPower += kPi * dB * patchArea[p] * escaped;
@@ -547,18 +633,30 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   const uint32_t si = patchSurface[p];
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
 
-  const pxpl5::HemisphereFrame& frame = chosen ? *chosen : frameFrom(p, eye);
-  if (pixelShare == 0) pixelShare = frame.weights[static_cast<size_t>(frame.height / 2) * frame.stride + frame.width / 2];
-  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = f.factor;
+  // A kept shot of p stands for its frame and judgement (the same geometry, the same point).
+  const KeptShot* before = chosen ? nullptr : keptShot(p);
+  const pxpl5::HemisphereFrame* frame = chosen || before ? chosen : &frameFrom(p, eye);
+  const std::span<const pxpl5::IdFactor> factors = frame ? std::span<const pxpl5::IdFactor>(frame->factors)
+                                                           : before ? std::span<const pxpl5::IdFactor>(before->factors) : std::span<const pxpl5::IdFactor>();
+  const double total = frame ? frame->total : before ? before->total : 0.0;
+  if (pixelShare == 0 && frame) pixelShare = frame->weights[static_cast<size_t>(frame->height / 2) * frame->stride + frame->width / 2];
+  for (const pxpl5::IdFactor& f : factors) pixelFactor[f.id] = f.factor;
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(eyeNormal));
 
   // Near and small receivers get new factors, per channel (near ones weigh the shooter's
   // elements by their unshot light), judged on the graphics processors.
   const auto elements = static_cast<uint32_t>(receiver.size());
   renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
-    judgeReceivers(p, frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
-                   static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunks[c]);
+    if (before)
+      rejudgeReceivers(p, std::span(before->judged).subspan(before->chunkStart[c], before->chunkStart[c + 1] - before->chunkStart[c]), chunks[c]);
+    else
+      judgeReceivers(p, *frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
+                     static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunks[c]);
   });
+  if (before)
+    ++stats.reusedShots;
+  else
+    keepShot(p, *frame);
   double replacedPixels = 0;
   glm::dvec3 replacedNew{0};
   for (const ReceiverChunk& chunk : chunks) {
@@ -573,9 +671,9 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   // everything is new (a small closed room, all of it near) that cannot work; then all factors
   // and the sky are scaled to sum to 1, which keeps the near factors' proportions.
   double kept = 0;
-  for (const pxpl5::IdFactor& f : frame.factors)
+  for (const pxpl5::IdFactor& f : factors)
     if (!replaced[f.id]) kept += f.factor;
-  const double sky = std::max(0.0, 1.0 - frame.total);
+  const double sky = std::max(0.0, 1.0 - total);
   glm::dvec3 scale{1}, newScale{1};
   bool renormalised = false;
   for (int c = 0; c < 3; ++c) {
@@ -592,7 +690,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   for (ReceiverChunk& chunk : chunks)
     for (NewFactor& f : chunk.factors) f.front *= newScale, f.back *= newScale;
 
-  for (const pxpl5::IdFactor& f : frame.factors) {
+  for (const pxpl5::IdFactor& f : factors) {
     if (replaced[f.id]) continue;
     const glm::dvec3 factor = f.factor * scale;
     if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
@@ -601,7 +699,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   for (const ReceiverChunk& chunk : chunks)
     for (const NewFactor& f : chunk.factors) deposit(f.element, f.front, f.back);
 
-  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = 0;
+  for (const pxpl5::IdFactor& f : factors) pixelFactor[f.id] = 0;
   for (const ReceiverChunk& chunk : chunks)
     for (const NewFactor& f : chunk.factors) replaced[f.element] = 0;
   return sky * scale;

@@ -183,6 +183,33 @@ TEST(RadiositySolver, DeterministicAndIndependentOfGraphicsProcessors) {
     }
 }
 
+// A patch's kept frame and judgement (SolverSettings::shotCacheBytes) stand for new ones bit for
+// bit, with its light spread unevenly over its elements (overshoot) and a budget too small for all.
+TEST(RadiositySolver, KeptShotsGiveTheSameLight) {
+  std::vector<Surface> scene = closedBox(1, 0.25, glm::dvec3(0.6), glm::dvec3(0));
+  scene.push_back(rectangle({0.3, 0.3, 0.999}, {0, 0.3, 0}, {0.3, 0, 0}, 0.1, glm::dvec3(0.5), glm::dvec3(4)));
+  for (Surface& s : scene) s.patchOfElement = groupIntoPatches(s, 0.5);
+  SolverSettings none, some, all;
+  none.shotCacheBytes = 0;
+  some.shotCacheBytes = 64 << 10;
+  for (SolverSettings* s : {&none, &some, &all}) s->overshoot = true;
+  Solver a(scene, none), b(scene, some), c(scene, all);
+  a.solve(0.001);
+  b.solve(0.001);
+  c.solve(0.001);
+  EXPECT_EQ(a.stats().reusedShots, 0u);
+  EXPECT_GT(b.stats().reusedShots, 0u);
+  EXPECT_GT(c.stats().reusedShots, b.stats().reusedShots);
+  EXPECT_EQ(a.stats().shots, c.stats().shots);
+  EXPECT_EQ(a.stats().smallReceivers, c.stats().smallReceivers);
+  EXPECT_EQ(a.stats().nearReceivers, c.stats().nearReceivers);
+  for (uint32_t s = 0; s < scene.size(); ++s)
+    for (size_t e = 0; e < scene[s].elements.size(); ++e) {
+      EXPECT_EQ(a.elementRadiance(s)[e], b.elementRadiance(s)[e]);
+      EXPECT_EQ(a.elementRadiance(s)[e], c.elementRadiance(s)[e]);
+    }
+}
+
 TEST(RadiositySolver, RefusesBadInput) {
   Surface s = quad({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, glm::dvec3(0.5));
   s.elements[0][2] = 7;
