@@ -23,6 +23,15 @@ using test::areaTimesRadiance;
 using test::closedBox;
 using test::rectangle;
 
+// Uniform numbers in [0, 1) from a 64-bit LCG's top 53 bits: the same sequence on every machine.
+struct Uniform {
+  uint64_t state;
+  double operator()() {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) * 0x1.0p-53;
+  }
+};
+
 constexpr double kPi = std::numbers::pi;
 
 void groupAll(std::vector<Surface>& surfaces, double patchEdge) {
@@ -111,11 +120,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RadiositySquares,
 // direction above the horizon; within 1% each (its error falls as the fourth power of radius over
 // distance) and exactly the contour integral where the rule does not apply.
 TEST(RadiosityPhysics, ReceiverGaussRuleAgreesWithContourIntegral) {
-  uint64_t state = 12345;
-  const auto uniform = [&] {  // a 64-bit LCG's top 53 bits
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return double(state >> 11) * 0x1.0p-53;
-  };
+  Uniform uniform{12345};
   const auto direction = [&] {
     glm::dvec3 d;
     do d = {2 * uniform() - 1, 2 * uniform() - 1, 2 * uniform() - 1};
@@ -151,11 +156,7 @@ TEST(RadiosityPhysics, ReceiverGaussRuleAgreesWithContourIntegral) {
 // random triangles and quads in every direction and for edges through the point, of zero length
 // and facing away (angles over 90 degrees).
 TEST(RadiosityPhysics, VectorContourSumMatchesScalarReference) {
-  uint64_t state = 777;
-  const auto uniform = [&] {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return double(state >> 11) * 0x1.0p-53;
-  };
+  Uniform uniform{777};
   const auto around = [&] { return glm::dvec3(4 * uniform() - 2, 4 * uniform() - 2, 4 * uniform() - 0.5); };
   const glm::dvec3 normal = glm::normalize(glm::dvec3(0.1, -0.2, 1));
   int differ = 0;
@@ -175,11 +176,7 @@ TEST(RadiosityPhysics, VectorContourSumMatchesScalarReference) {
 // The receiver's Gauss rule with its points in vector lanes against its scalar reference: the
 // same bits, for random triangles and quads seen from points all around them.
 TEST(RadiosityPhysics, VectorGaussSumMatchesScalarReference) {
-  uint64_t state = 4242;
-  const auto uniform = [&] {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return double(state >> 11) * 0x1.0p-53;
-  };
+  Uniform uniform{4242};
   const auto around = [&] { return glm::dvec3(4 * uniform() - 2, 4 * uniform() - 2, 4 * uniform() - 2); };
   int differ = 0;
   for (int i = 0; i < 20000; ++i) {
