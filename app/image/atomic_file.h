@@ -8,7 +8,8 @@
 namespace app {
 
 // Throws std::runtime_error naming `path` when the file cannot be written; the old file, if
-// any, is then untouched and no temporary file is left behind.
+// any, is then untouched and no temporary file is left behind. A symbolic link's target is
+// replaced (the link stays); a device or pipe is written in place, since it cannot be replaced.
 void writeFileAtomically(const std::string& path, std::string_view bytes);
 
 // Throws as writeFileAtomically would when `path` cannot become a file: its folder is missing or

@@ -8,6 +8,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace app {
 namespace {
 
@@ -59,6 +63,32 @@ TEST(ImageIo, RenamingOntoADirectoryFailsCleanly) {
   std::filesystem::create_directories(path);
   EXPECT_THROW(writePng(path, ImageRgb8{1, 1, {0, 0, 0}}), std::runtime_error);
   EXPECT_TRUE(std::filesystem::is_directory(path));
+}
+
+// `--out` may name a link or a pipe (`/dev/stdout`): a link keeps pointing at the file it names,
+// now with the new bytes, and a pipe stays a pipe whose reader gets them.
+TEST(ImageIo, ALinkOrAPipeIsWrittenThroughNotReplaced) {
+  const std::filesystem::path dir = std::filesystem::path(kDir) / "through";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  writeFileAtomically((dir / "target.txt").string(), "old");
+  std::filesystem::create_symlink("target.txt", dir / "link.txt");
+  writeFileAtomically((dir / "link.txt").string(), "new");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.txt"));
+  EXPECT_EQ(readAll((dir / "target.txt").string()), "new");
+
+  const std::string pipe = (dir / "pipe").string();
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  // The reader's end is open first (without waiting for a writer), so the write neither blocks
+  // nor, were the pipe replaced, leaves anyone waiting.
+  const int reader = ::open(pipe.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  writeFileAtomically(pipe, "through the pipe");
+  char buffer[64] = {};
+  const ssize_t got = ::read(reader, buffer, sizeof buffer);
+  ::close(reader);
+  EXPECT_EQ(std::string(buffer, got > 0 ? static_cast<size_t>(got) : 0), "through the pipe");
+  EXPECT_EQ(std::filesystem::status(pipe).type(), std::filesystem::file_type::fifo);
 }
 
 TEST(ImageIo, ReadingGarbageThrows) {
