@@ -21,14 +21,9 @@ double itemBufferVisibility(const pxpl5::HemisphereFrame& frame, const Hemispher
   const int resolution = frame.width;
   int visible = 0, considered = 0;
   for (const glm::dvec3& target : targets) {
+    int i = 0, j = 0;
+    if (!targetPixel(axes, eye, resolution, target, i, j)) continue;
     const glm::dvec3 d = target - eye;
-    if (glm::dot(d, axes.z) <= 0) continue;  // on or below the horizon
-    // Pixel (i, j) looks along x = (i + 0.5) * 2 / resolution - 1: the nearest centre to x, as
-    // floor((x + 1) * resolution / 2); x + 1 >= 0, so the conversion truncates it the same.
-    const double scale = 0.5 * resolution / std::sqrt(glm::dot(d, d));
-    const int i = static_cast<int>(glm::dot(d, axes.x) * scale + 0.5 * resolution);
-    const int j = static_cast<int>(glm::dot(d, axes.y) * scale + 0.5 * resolution);
-    if (i < 0 || j < 0 || i >= resolution || j >= frame.height) continue;
     ++considered;
     const uint32_t seen = frame.items[static_cast<size_t>(j) * frame.stride + i];
     if (seen == pxpl5::kNoValue || seen == element || planes.surface[seen] == planes.surface[element]) {

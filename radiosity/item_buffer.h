@@ -4,7 +4,10 @@
 
 #include "pxpl5/hemisphere.h"
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+
+#include <cmath>
 
 #include <cstdint>
 #include <span>
@@ -25,6 +28,20 @@ struct ElementPlanes {
   std::span<const double> offset;
   std::span<const uint32_t> surface;
 };
+
+// The pixel of a hemisphere image `resolution` across whose item is read for `target` seen
+// from `eye`, or false when the target is on or below the horizon or off the image. Pixel
+// (i, j) looks along x = (i + 0.5) * 2 / resolution - 1: the nearest centre to x is
+// floor((x + 1) * resolution / 2), and x + 1 >= 0, so the conversion truncates it the same.
+inline bool targetPixel(const HemisphereAxes& axes, const glm::dvec3& eye, int resolution, const glm::dvec3& target,
+                        int& i, int& j) {
+  const glm::dvec3 d = target - eye;
+  if (glm::dot(d, axes.z) <= 0) return false;
+  const double scale = 0.5 * resolution / std::sqrt(glm::dot(d, d));
+  i = static_cast<int>(glm::dot(d, axes.x) * scale + 0.5 * resolution);
+  j = static_cast<int>(glm::dot(d, axes.y) * scale + 0.5 * resolution);
+  return i >= 0 && j >= 0 && i < resolution && j < resolution;
+}
 
 // The share of `targets` (points on element `element`) that the frame's viewpoint `eye` sees.
 // A target is hidden when the polygon in its pixel is of another surface and that polygon's

@@ -105,14 +105,4 @@ void WindowCull::drawWithin(const pxpl5::PixelRect& grown) {
     if (drawnMark_[j] == mark) drawn.push_back(j);
 }
 
-bool targetPixel(const HemisphereAxes& axes, const glm::dvec3& eye, int resolution, const glm::dvec3& target, int& i,
-                 int& j) {
-  const glm::dvec3 d = target - eye;
-  if (glm::dot(d, axes.z) <= 0) return false;
-  const double scale = 0.5 * resolution / std::sqrt(glm::dot(d, d));
-  i = static_cast<int>(glm::dot(d, axes.x) * scale + 0.5 * resolution);
-  j = static_cast<int>(glm::dot(d, axes.y) * scale + 0.5 * resolution);
-  return i >= 0 && j >= 0 && i < resolution && j < resolution;
-}
-
 }  // namespace radiosity

@@ -76,9 +76,4 @@ class WindowCull {
   std::vector<uint32_t> rectMade_, drawnMark_;  // per element, the cull that made its rect, the drawWithin that drew it
 };
 
-// The pixel of the hemisphere image whose item the item buffer reads for `target` seen from
-// `eye` (as itemBufferVisibility does), or false when the target is on or below the horizon.
-bool targetPixel(const HemisphereAxes& axes, const glm::dvec3& eye, int resolution, const glm::dvec3& target, int& i,
-                 int& j);
-
 }  // namespace radiosity
