@@ -33,7 +33,7 @@ struct SceneTriangle {
 
 struct TriangleMergeCounts {
   size_t triangles = 0;    // given
-  size_t degenerate = 0;   // skipped: a repeated corner, or a height below 1e-3 `tolerance`
+  size_t degenerate = 0;   // skipped: a repeated corner, or a height of at most `tolerance`
   size_t tJunctions = 0;   // edges split at a vertex lying on them
   size_t surfaces = 0;     // made
   size_t singles = 0;      // of those, triangles left on their own (no coplanar neighbour, or

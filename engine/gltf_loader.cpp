@@ -25,12 +25,8 @@ namespace engine {
 namespace {
 
 constexpr double kMaxReflectance = 0.95;  // albedo 1 in a closed room never converges
-constexpr double kMaxLength = 1e6;        // as in scene files
-constexpr double kMaxEmission = 1e6;      // as in scene files
 constexpr double kMaxPatchesPerEdge = 1e5;
 constexpr double kSkyLift = 0.01;         // the sky floats this fraction of the extent above the model
-
-std::string indexed(const char* array, size_t index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
 
 // extras.KEY when it is three numbers, as walkrad's exporter writes a material's reflectance and
 // emission (gltf_export.h).
@@ -59,12 +55,10 @@ std::string uniqueName(const std::string& name, std::set<std::string>& taken) {
 class AccessorReader {
  public:
   AccessorReader(const tinygltf::Model& model, int index, const std::string& file, const std::string& user) {
-    place_ = indexed("accessors", static_cast<size_t>(index));
+    place_ = child("accessors", static_cast<size_t>(index));
     auto fail = [&](Diag diag, const std::string& detail) { throw SceneError(diag, file, place_, detail + " (" + user + ")"); };
-    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) {
-      place_ = user;
+    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
       throw SceneError(Diag::BadGltfReference, file, user, "accessor " + std::to_string(index));
-    }
     const tinygltf::Accessor& a = model.accessors[static_cast<size_t>(index)];
     if (a.sparse.isSparse) fail(Diag::BadAccessor, "sparse accessors are not read");
     componentType_ = a.componentType;
@@ -74,7 +68,12 @@ class AccessorReader {
     componentSize_ = static_cast<size_t>(componentSize);
     normalized_ = a.normalized;
     count_ = a.count;
-    if (a.bufferView < 0) return;  // all zeros, as the spec says
+    // Without a view the spec makes every element zero: no geometry, and an unchecked count
+    // (any number) would size what is read from it.
+    if (a.bufferView < 0) {
+      if (count_ > 0) fail(Diag::BadAccessor, std::to_string(count_) + " elements and no bufferView");
+      return;
+    }
     if (static_cast<size_t>(a.bufferView) >= model.bufferViews.size()) fail(Diag::BadGltfReference, "bufferView " + std::to_string(a.bufferView));
     const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(a.bufferView)];
     if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
@@ -204,12 +203,12 @@ class GltfImporter {
     for (int root : roots) {
       const tinygltf::Node& node = model_.nodes[static_cast<size_t>(root)];
       const size_t before = triangles_.size();
-      const glm::dmat4 world = localMatrix(node, file_, indexed("nodes", static_cast<size_t>(root)));
+      const glm::dmat4 world = localMatrix(node, file_, child("nodes", static_cast<size_t>(root)));
       const auto object = static_cast<uint32_t>(scene_.objects.size());
       visit(root, world, object);
       if (triangles_.size() == before) continue;  // a camera or an empty group: nothing to drag
       Object o;
-      o.name = uniqueName(node.name.empty() ? indexed("node", static_cast<size_t>(root)) : node.name, objectNames);
+      o.name = uniqueName(node.name.empty() ? child("node", static_cast<size_t>(root)) : node.name, objectNames);
       o.position = Vec3(world[3]);
       const auto own = sidecar_.movableObjects.find(node.name);
       o.movable = own != sidecar_.movableObjects.end() ? own->second : sidecar_.movable.value_or(true);
@@ -234,9 +233,9 @@ class GltfImporter {
     std::set<std::string> overridden;
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const tinygltf::Material& m = model_.materials[i];
-      const std::string place = indexed("materials", i);
+      const std::string place = child("materials", i);
       Material material;
-      material.name = uniqueName(m.name.empty() ? indexed("material", i) : m.name, names);
+      material.name = uniqueName(m.name.empty() ? child("material", i) : m.name, names);
       const std::vector<double>& base = m.pbrMetallicRoughness.baseColorFactor;
       if (base.size() != 4) fail(Diag::WrongType, place + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
       const Vec3 texture = textureMean(model_, m.pbrMetallicRoughness.baseColorTexture.index);
@@ -313,7 +312,7 @@ class GltfImporter {
   // the walk ends.
   void visit(int index, const glm::dmat4& world, uint32_t object) {
     const size_t i = static_cast<size_t>(index);
-    const std::string place = indexed("nodes", i);
+    const std::string place = child("nodes", i);
     if (visited_[i]) fail(Diag::NodeLoop, place);
     visited_[i] = 1;
     const tinygltf::Node& node = model_.nodes[i];
@@ -324,7 +323,7 @@ class GltfImporter {
     if (node.camera >= 0) readCamera(node, i, world);
     for (int c : node.children) {
       if (c < 0 || static_cast<size_t>(c) >= model_.nodes.size()) fail(Diag::BadGltfReference, place + ".children", std::to_string(c));
-      visit(c, world * localMatrix(model_.nodes[static_cast<size_t>(c)], file_, indexed("nodes", static_cast<size_t>(c))), object);
+      visit(c, world * localMatrix(model_.nodes[static_cast<size_t>(c)], file_, child("nodes", static_cast<size_t>(c))), object);
     }
   }
 
@@ -334,7 +333,7 @@ class GltfImporter {
     const bool mirrored = glm::determinant(linear) < 0;  // a mirroring transform turns fronts to backs
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = mesh.primitives[p];
-      const std::string place = indexed("meshes", meshIndex) + "." + indexed("primitives", p);
+      const std::string place = child(child(child("meshes", meshIndex), "primitives"), p);
       const int mode = primitive.mode;
       if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) continue;
       uint32_t material = 0;
@@ -395,12 +394,12 @@ class GltfImporter {
   }
 
   void readCamera(const tinygltf::Node& node, size_t nodeIndex, const glm::dmat4& world) {
-    const std::string place = indexed("nodes", nodeIndex) + ".camera";
+    const std::string place = child(child("nodes", nodeIndex), "camera");
     if (static_cast<size_t>(node.camera) >= model_.cameras.size()) fail(Diag::BadGltfReference, place, std::to_string(node.camera));
     const tinygltf::Camera& c = model_.cameras[static_cast<size_t>(node.camera)];
     if (c.type != "perspective") return;  // orthographic views are not walked through
     Camera camera;
-    camera.name = uniqueName(!c.name.empty() ? c.name : !node.name.empty() ? node.name : indexed("camera", static_cast<size_t>(node.camera)), cameraNames_);
+    camera.name = uniqueName(!c.name.empty() ? c.name : !node.name.empty() ? node.name : child("camera", static_cast<size_t>(node.camera)), cameraNames_);
     camera.position = Vec3(world[3]);
     const glm::dmat3 linear(world);
     const Vec3 forward = linear * Vec3(0, 0, -1), up = linear * Vec3(0, 1, 0);
@@ -475,7 +474,7 @@ std::vector<Surface> triangleFaces(const std::vector<SceneTriangle>& triangles, 
     face.material = t.material;
     face.object = t.object;
     face.face = "triangle " + std::to_string(i);
-    face.jsonPath = indexed("nodes", importer.nodeOf(t.object));
+    face.jsonPath = child("nodes", importer.nodeOf(t.object));
     faces.push_back(std::move(face));
   }
   return faces;
@@ -522,7 +521,7 @@ Scene importGltf(std::string_view bytes, const std::string& file, const LoadOpti
     // Coplanar triangles into polygons, within a tolerance relative to the model's size.
     TriangleMergeCounts merged;
     scene.surfaces = mergeTriangles(scene, triangles, kMergeTolerance * glm::length(hi - lo), &merged);
-    for (Surface& s : scene.surfaces) s.jsonPath = indexed("nodes", importer.nodeOf(s.object));
+    for (Surface& s : scene.surfaces) s.jsonPath = child("nodes", importer.nodeOf(s.object));
     if (sidecar.sky) addSky(scene, *sidecar.sky, lo, hi);
     ImportCounts counts = importer.counts();
     counts.triangles = merged.triangles;

@@ -9,8 +9,6 @@ namespace engine {
 
 namespace {
 
-constexpr double kMaxLength = 1e6;    // as in scene files
-constexpr double kMaxEmission = 1e6;  // as in scene files
 
 }  // namespace
 

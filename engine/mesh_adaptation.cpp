@@ -135,8 +135,7 @@ void MeshAdaptation::edit(const Scene& scene, const MeshedScene& meshed) {
     SurfaceMesh& mesh = meshed_.surfaces[s] = meshed.surfaces[s];
     mesh.polygon = planePolygon(scene.surfaces[s], scene.surfaces[s]);
     mesh.mesh.vertices = planeVertices(scene.surfaces[s], mesh.positions);
-    scene_.surfaces[s] = scene.surfaces[s];
-    input_[s] = radiosityInput(scene_, meshed_, s);
+    input_[s] = radiosityInput(scene, meshed_, s);
   }
   scene_ = scene;
   // Passes are due again as the light after the edit settles (see adaptIfDue).

@@ -21,9 +21,7 @@ namespace engine {
 
 namespace {
 
-// Limits that make a value absurd rather than merely unusual.
-constexpr double kMaxLength = 1e6;     // any coordinate, in scene units
-constexpr double kMaxEmission = 1e6;   // radiance
+// Further limits that make a value absurd rather than merely unusual (see scene_loader.h).
 constexpr double kMinLength = 1e-9;   // shorter edges and sweeps are degenerate, in scene units
 constexpr int kMaxSlices = 256;
 constexpr size_t kMaxPolygonPoints = 1024;  // per profile or hole

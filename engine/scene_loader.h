@@ -8,6 +8,11 @@
 
 namespace engine {
 
+// Limits that make a value absurd rather than merely unusual, in every loader (scene files,
+// glTF models, sidecars).
+constexpr double kMaxLength = 1e6;    // any coordinate or size, in scene units
+constexpr double kMaxEmission = 1e6;  // radiance
+
 // What the command line may add to a model file.
 struct LoadOptions {
   std::string units;    // glTF only: the units of the model's coordinates (else the sidecar's, else m)

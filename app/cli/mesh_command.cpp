@@ -62,6 +62,7 @@ OrderedJson elementJson(const std::array<uint32_t, 4>& e) {
 
 int runMesh(const MeshOptions& options) {
   const bool gltf = engine::isGltfPath(options.input);
+  if (!gltf) engine::refuseGltfOptions(options.input, options.load);  // polygon cases too
   const std::string text = gltf ? std::string() : engine::readInputFile(options.input);
   const engine::JsonReader in(options.input);
   const engine::Json root = gltf ? engine::Json::object() : in.parse(text);
@@ -70,7 +71,7 @@ int runMesh(const MeshOptions& options) {
   double meshMs = 0;
   OrderedJson dump;
   OrderedJson imported;
-  if (!gltf && engine::isPolygonCase(root)) {
+  if (engine::isPolygonCase(root)) {
     const engine::PolygonCase polygonCase = engine::parsePolygonCase(root, in);
     const std::optional<double> patch = options.patchSize ? options.patchSize : polygonCase.patchSize;
     if (!patch) in.fail(engine::Diag::MissingField, "patch_size", "give it in the file or with --patch-size");
@@ -84,7 +85,7 @@ int runMesh(const MeshOptions& options) {
       for (const auto& e : mesh.elements) dump["elements"].push_back(elementJson(e));
     }
   } else {
-    engine::Scene scene = engine::loadScene(options.input, options.load);
+    engine::Scene scene = gltf ? engine::loadScene(options.input, options.load) : engine::parseScene(text, options.input);
     imported = importStats(scene);
     if (options.patchSize)
       for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;

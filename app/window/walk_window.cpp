@@ -184,9 +184,10 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 
 // Walks through one scene until the window closes, the frame count runs out (nothing returned)
 // or a file dropped onto the window opens (returned: the window goes on with it). A dropped file
-// that does not open leaves the scene as it is and says why in the panel.
+// that does not open leaves the scene as it is and says why in the panel. `frame` counts the
+// window's frames across the scenes it shows, so --frames bounds the whole run.
 std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& options, OpenedScene opened, ViewCamera camera,
-                                     int& exitCode) {
+                                     int& frame, int& exitCode) {
   SceneEdits edits(opened.path, std::move(opened.text), std::move(opened.scene));
   const engine::Scene& scene = edits.editor().scene();  // follows the edits
   engine::DisplayMesh mesh = engine::displayMesh(edits.editor().meshed());
@@ -246,7 +247,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
   glm::dvec2 lastMouse{0};
   bool looking = false, leftWasDown = false;
   double lastTime = glfwGetTime();
-  for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
+  for (++frame; !glfwWindowShouldClose(window); ++frame) {
     g_presses.clear();
     glfwPollEvents();
     const double now = glfwGetTime();
@@ -419,11 +420,11 @@ int runView(const ViewOptions& options) {
   // A key pressed and released between two frames still reads as pressed once (F12, taps).
   glfwSetInputMode(window, GLFW_STICKY_KEYS, GLFW_TRUE);
 
-  int exitCode = 0;
+  int exitCode = 0, frame = 0;
   {
     const ImGuiSession imgui(window);
-    for (auto next = walkScene(window, options, std::move(opened), camera, exitCode); next;
-         next = walkScene(window, options, std::move(*next), camera, exitCode)) {
+    for (auto next = walkScene(window, options, std::move(opened), camera, frame, exitCode); next;
+         next = walkScene(window, options, std::move(*next), camera, frame, exitCode)) {
       chooseCamera(next->scene, "", camera);
       glfwSetWindowTitle(window, ("walkrad - " + std::filesystem::path(next->path).filename().string()).c_str());
     }

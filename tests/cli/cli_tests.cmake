@@ -140,6 +140,8 @@ walkrad_cli_test(gltf_without_light 0 ARGS render ${cli_dir}/no_light.gltf --out
 # (the floor's two), export bakes the model's light.
 walkrad_cli_test(check_gltf 0 ARGS check ${cli_dir}/no_light.gltf STDOUT "no_light.gltf: 2 faces checked in [0-9.e-]+ ms: 0 findings")
 walkrad_cli_test(check_truncated_gltf 2 ARGS check ${cli_dir}/truncated.gltf STDERR "truncated.gltf: not a readable glTF 2.0 model")
+walkrad_cli_test(units_for_polygon_case 2 ARGS mesh ${cli_dir}/wall_with_window.json --units cm
+                 STDERR "wall_with_window.json: --units: this option applies to glTF models only")
 walkrad_cli_test(check_units_for_scene_file 2 ARGS check ${PROJECT_SOURCE_DIR}/assets/cornell.json --units cm
                  STDERR "cornell.json: --units: this option applies to glTF models only")
 walkrad_cli_test(export_gltf_model 0 ARGS export ${cli_dir}/no_light.gltf --out ${out}/no-light-export.glb --quiet

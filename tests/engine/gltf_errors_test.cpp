@@ -75,6 +75,8 @@ const ErrorCase kCases[] = {
     {"accessor offset past its view", [](nlohmann::json& j) { j["accessors"][1]["byteOffset"] = 1000; }, Diag::BadAccessor, "accessors[1]"},
     {"view past its buffer", [](nlohmann::json& j) { j["bufferViews"][0]["byteLength"] = 100000; }, Diag::BadAccessor, "accessors[0]"},
     {"index beyond the positions", [](nlohmann::json& j) { j["accessors"][0]["count"] = 2; }, Diag::BadAccessor, "accessors[1]"},
+    {"accessor of a billion zeros", [](nlohmann::json& j) { j["accessors"][0].erase("bufferView"); j["accessors"][0]["count"] = 1000000000; },
+     Diag::BadAccessor, "accessors[0]"},
     {"float indices", [](nlohmann::json& j) { j["accessors"][1]["componentType"] = 5126; j["accessors"][1]["count"] = 3; },
      Diag::BadAccessor, "accessors[1]"},
     {"positions as VEC2", [](nlohmann::json& j) { j["accessors"][0]["type"] = "VEC2"; }, Diag::BadAccessor, "accessors[0]"},
