@@ -1,7 +1,7 @@
 // A renderer's pixel processors running one primitive's instruction stream over one region:
 // enable the pixels of the primitive's bounds, disable those where an edge expression is
 // negative, then depth-test and write the survivors. Two evaluators give the same bits: a
-// plain per-pixel reference and one the compiler vectorises. Internal to pxpl5.
+// plain per-pixel reference and one written in GCC vector extensions. Internal to pxpl5.
 #pragma once
 
 #include "pxpl5/batch.h"

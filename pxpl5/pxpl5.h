@@ -45,7 +45,7 @@ struct PixelRect {
 };
 
 enum class Evaluator {
-  kVector,           // rows of eight pixels per instruction, written for the compiler's vectoriser
+  kVector,           // rows of eight pixels per instruction, in GCC vector extensions
   kScalarReference,  // one pixel at a time, plainly; the vectorised evaluator must match it bit for bit
 };
 

@@ -134,7 +134,7 @@ struct Solver::State {
   // factor, a near one's visibility from the centre (its integral weighs the shooter's elements
   // by their unshot light, so it is done in every shot).
   struct Judged {
-    enum Kind : uint32_t { kSmallFront, kSmallBack, kNear, kNearBehind };
+    enum Kind : uint32_t { kSmallFront, kNear, kNearBehind };
     uint32_t element;
     Kind kind;
     double value;
@@ -221,7 +221,7 @@ struct Solver::State {
   // p's tree must be lit. For corrections that deposit differences (windowed_correction.h).
   void listedFactors(uint32_t p, const pxpl5::HemisphereFrame& frame, std::span<const uint32_t> elements,
                      const FrameScale& scale, std::vector<NewFactor>& out);
-  // Patch p's spheres and its elements' for windowed_correction.h.
+  // The scene's element and patch spheres, for windowed_correction.h.
   SceneSpheres spheres() const {
     return {centre, radius, surfaceOf, patchCentre, patchRadius, patchFirst, patchLast, patchElements};
   }
@@ -466,7 +466,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
       const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded) : 0;
-      out.judged.push_back({j, glm::dot(normal[j], eye) > offset[j] ? Judged::kSmallFront : Judged::kSmallBack, unoccluded * v});
+      out.judged.push_back({j, Judged::kSmallFront, unoccluded * v});  // its front faces the centre (above)
       ++smallCount;
     }
     replacedPixels += pixelFactor[j];
@@ -500,8 +500,6 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
     NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
     if (k.kind == Judged::kSmallFront) {
       f.front = glm::dvec3(k.value);
-    } else if (k.kind == Judged::kSmallBack) {
-      f.back = glm::dvec3(k.value);
     } else if (const bool behind = k.kind == Judged::kNearBehind; k.value > 0 || behind) {
       patchToReceiver(trees[p], nodeLight, own, receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
                       settings.pieceRatio, settings.maxShooterSplits, f.front, f.back);
@@ -1193,13 +1191,7 @@ bool Solver::correctInWindow(uint32_t p) {
   }
 
   // The centre's share of backs changes by the window's: it must still be kept now.
-  const auto backs = [&](const State& s, const pxpl5::HemisphereFrame& f) {
-    double share = 0;
-    for (const pxpl5::IdFactor& k : f.factors)
-      if (glm::dot(s.normal[k.id], eye) <= s.offset[k.id]) share += k.factor;
-    return share;
-  };
-  const double centreBacks = before.pointBackShare[p] - backs(before, *frameBefore) + backs(now, frameNow);
+  const double centreBacks = before.pointBackShare[p] - before.backShare(*frameBefore, eye) + now.backShare(frameNow, eye);
   if (!now.pointChosen[q]) {
     if (centreBacks > kMostBacks) return false;
     now.pointChosen[q] = 1;

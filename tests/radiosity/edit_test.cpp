@@ -76,7 +76,7 @@ TEST(RadiosityEdit, ARemeshedSurfaceGathersItsLight) {
 
 // A correction in a window of the hemisphere deposits what taking back and sending again all of
 // the patch's light deposits. Compared on what the corrections changed, element by element;
-// they differ by the energy the whole frames keep by rescaling (radiosity.h), which the window
+// they differ by the energy the whole frames keep by rescaling (distribute and correctInWindow in solver.cpp), which the window
 // leaves to the sky.
 TEST(RadiosityEdit, AWindowedCorrectionDepositsWhatAWholeOneDoes) {
   SolverSettings whole;
