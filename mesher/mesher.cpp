@@ -42,7 +42,8 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   if (!s.refiner) s.refiner.emplace(s.built);
   s.refiner->refine();
   s.built.tree.changes.clear();
-  // Every node has four children (nothing was merged): a quarter of the rest are nodes.
+  // Every node has four children, so about a quarter of the rest are nodes (an estimate for
+  // reserving: children of splits the refiner took back stay in the array unused).
   const size_t leaves = (3 * s.built.tree.quadrants.size() + 1) / 4;
   if (!s.emitter) {
     s.emitter.emplace(polygon, s.built, leaves);

@@ -229,6 +229,7 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
     return;
   }
   score_ = -1;
+  if (firstGood_) return;  // reachesBound asks only whether a fan reaches the bound: none did
   earClipAndMerge(ring, out);
 }
 

@@ -25,8 +25,8 @@ void meshKitchen(benchmark::State& state) {
 BENCHMARK(meshKitchen)->Arg(24)->Arg(20)->Arg(16)->Arg(12)->Arg(8)->Unit(benchmark::kMillisecond);
 
 // One floor with two holes, from 10 thousand to about a million elements: time per element
-// should stay flat (linear growth). reuse:1 meshes into the same Mesher and Mesh each time, as a
-// program meshing surface after surface would; reuse:0 is the one-shot meshPolygon, which also
+// should stay flat (linear growth). reuse:1 meshes into the same Mesher and Mesh each time (a caller
+// that keeps its output buffers; the engine keeps the Mesher only); reuse:0 is the one-shot meshPolygon, which also
 // pays the kernel for fresh pages once the arrays outgrow the allocator's heap.
 void meshFloor(benchmark::State& state) {
   const mesher::PolygonWithHoles floor{{{0, 0}, {45, 0}, {45, 45}, {0, 45}},

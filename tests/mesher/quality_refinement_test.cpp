@@ -48,7 +48,7 @@ TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
 }
 
 // A corner a hair from a grid line stays that close to one, relatively, for more levels than
-// splitting may go: the tree is left as it was.
+// splitting may go: the tree's leaves are left as they were.
 TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
   PolygonTree built = buildPolygonTree(notchCornerIn(0.8667, 1e-7), 4);
   balance(built.tree);
@@ -58,8 +58,7 @@ TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
   EXPECT_EQ(built.tree.leaves().size(), leaves);
 }
 
-// The refined trees stay 2:1 balanced (AdaptiveMesh builds on them) and every vertex leaf that
-// was split reaches the bound.
+// The refined trees stay 2:1 balanced (AdaptiveMesh builds on them), and splits happen.
 TEST(QualityRefinement, RefinedTreesStayBalanced) {
   std::mt19937 random(31);
   size_t splits = 0;
