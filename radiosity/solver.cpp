@@ -164,9 +164,10 @@ struct Solver::State {
     double total = 0;
     std::vector<Judged> judged;
     std::vector<uint32_t> chunkStart;  // kReceiverChunks + 1 offsets into `judged`
-    size_t bytes() const {
-      return factors.size() * sizeof(pxpl5::IdFactor) + judged.size() * sizeof(Judged) + chunkStart.size() * sizeof(uint32_t);
+    static size_t bytesFor(size_t factors, size_t judged) {
+      return factors * sizeof(pxpl5::IdFactor) + judged * sizeof(Judged) + (kReceiverChunks + 1) * sizeof(uint32_t);
     }
+    size_t bytes() const { return chunkStart.empty() ? 0 : bytesFor(factors.size(), judged.size()); }
   };
   std::vector<KeptShot> keptShots;
   size_t keptBytes = 0;
@@ -518,7 +519,7 @@ void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame) {
   // Sized before anything is copied: once the budget is spent most shots are not kept.
   size_t judged = 0;
   for (const ReceiverChunk& chunk : chunks) judged += chunk.judged.size();
-  const size_t bytes = frame.factors.size() * sizeof(pxpl5::IdFactor) + judged * sizeof(Judged) + (kReceiverChunks + 1) * sizeof(uint32_t);
+  const size_t bytes = KeptShot::bytesFor(frame.factors.size(), judged);
   if (keptBytes + bytes > settings.shotCacheBytes) return;
   KeptShot record;
   record.factors.assign(frame.factors.begin(), frame.factors.end());
