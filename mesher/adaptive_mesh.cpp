@@ -1,6 +1,7 @@
 #include "mesher/adaptive_mesh.h"
 
 #include "mesher/classify.h"
+#include "mesher/quality_refinement.h"
 
 #include <glm/common.hpp>
 
@@ -26,7 +27,7 @@ bool inTree(const Quadtree& tree, int32_t q) {
 }  // namespace
 
 AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
-    : built_(buildBalancedTree(polygon, settings.patchSize)) {
+    : built_(buildMeshTree(polygon, settings.patchSize)) {
   const std::vector<int32_t> leaves = built_.tree.leaves();
   emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
   MeshDelta ignored;

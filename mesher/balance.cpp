@@ -1,6 +1,5 @@
 #include "mesher/balance.h"
 
-#include "mesher/quality_refinement.h"
 
 namespace mesher {
 
@@ -40,14 +39,6 @@ size_t balance(Quadtree& tree) {
   for (int32_t q : tree.leaves())
     if (tree[q].level >= tree.uniformDepth + 2) deep.push_back(q);
   return balanceAround(tree, std::move(deep));
-}
-
-PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize) {
-  PolygonTree built = buildPolygonTree(polygon, patchSize);
-  balance(built.tree);
-  refineForQuality(built);
-  built.tree.changes.clear();
-  return built;
 }
 
 }  // namespace mesher

@@ -19,9 +19,4 @@ size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
 // Balances the whole tree (as built: no leaf coarser than its uniform depth).
 size_t balance(Quadtree& tree);
 
-// A polygon's tree as meshPolygon meshes it: buildPolygonTree, balance, then the splits of
-// refineForQuality (mesher/quality_refinement.h). Throws std::invalid_argument as
-// buildPolygonTree does.
-PolygonTree buildBalancedTree(const PolygonWithHoles& polygon, double patchSize);
-
 }  // namespace mesher

@@ -37,11 +37,7 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   State& s = *state_;
   // Phases of chapter 5: tree setup, edge storage and balancing, then splits of vertex leaves
   // that would mesh below the angle bound; then leaf by leaf meshing.
-  buildPolygonTree(polygon, settings.patchSize, s.built);
-  balance(s.built.tree);
-  if (!s.refiner) s.refiner.emplace(s.built);
-  s.refiner->refine();
-  s.built.tree.changes.clear();
+  buildMeshTree(polygon, settings.patchSize, s.built, s.refiner);
   // Every node has four children, so about a quarter of the rest are nodes (an estimate for
   // reserving: children of splits the refiner took back stay in the array unused).
   const size_t leaves = (3 * s.built.tree.quadrants.size() + 1) / 4;

@@ -68,4 +68,20 @@ size_t QualityRefiner::refine() {
 
 size_t refineForQuality(PolygonTree& built) { return QualityRefiner(built).refine(); }
 
+void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
+                   std::optional<QualityRefiner>& refiner) {
+  buildPolygonTree(polygon, patchSize, into);
+  balance(into.tree);
+  if (!refiner) refiner.emplace(into);
+  refiner->refine();
+  into.tree.changes.clear();
+}
+
+PolygonTree buildMeshTree(const PolygonWithHoles& polygon, double patchSize) {
+  PolygonTree built;
+  std::optional<QualityRefiner> refiner;
+  buildMeshTree(polygon, patchSize, built, refiner);
+  return built;
+}
+
 }  // namespace mesher

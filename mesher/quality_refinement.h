@@ -9,6 +9,7 @@
 #include "mesher/quadtree.h"
 #include "mesher/subdomain_removal.h"
 
+#include <optional>
 #include <vector>
 
 namespace mesher {
@@ -34,5 +35,14 @@ class QualityRefiner {
 
 // QualityRefiner(built).refine().
 size_t refineForQuality(PolygonTree& built);
+
+// A polygon's tree as the mesher meshes it, built into `into` (its memory reused):
+// buildPolygonTree, balance, the quality splits, and no changes left recorded. `refiner` is
+// made over `into` when empty and kept for the next polygon. Throws std::invalid_argument as
+// buildPolygonTree does.
+void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
+                   std::optional<QualityRefiner>& refiner);
+// The same into a new tree.
+PolygonTree buildMeshTree(const PolygonWithHoles& polygon, double patchSize);
 
 }  // namespace mesher
