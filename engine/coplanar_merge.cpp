@@ -2,6 +2,8 @@
 // rings | a group into surfaces | the inputs: mergeTriangles, mergeFaces.
 #include "engine/coplanar_merge.h"
 
+#include "engine/surface_mesh.h"
+
 #include "mesher/polygon.h"
 
 #include <glm/common.hpp>
@@ -106,20 +108,15 @@ struct Merged {
 enum class Corners { DropUnsharedCollinear, KeepAll };
 
 // A plane group's 2-D frame, counter-clockwise about its normal; world axes when the normal is
-// one, so coordinates stay exact (as surface_mesh.cpp lays surfaces down).
+// one, so coordinates stay exact (axisPlaneAxes, as surfaces are laid down for meshing).
 struct Frame {
   Vec3 u, v;
   Vec2 project(const Vec3& p) const { return {glm::dot(p, u), glm::dot(p, v)}; }
 };
 
 Frame frameFor(const Vec3& n) {
+  if (const auto axes = axisPlaneAxes(n)) return {axes->first, axes->second};
   const Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
-  if (n == x) return {y, z};
-  if (n == -x) return {z, y};
-  if (n == y) return {z, x};
-  if (n == -y) return {x, z};
-  if (n == z) return {x, y};
-  if (n == -z) return {y, x};
   const Vec3 a = glm::abs(n);
   const Vec3 helper = a.x <= a.y && a.x <= a.z ? x : (a.y <= a.z ? y : z);
   const Vec3 u = glm::normalize(glm::cross(helper, n));

@@ -21,14 +21,7 @@ struct PlaneFrame {
 };
 
 PlaneFrame planeFrame(const Surface& s) {
-  const Vec3 n = s.normal;
-  const Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
-  if (n == x) return {Vec3{0}, y, z};
-  if (n == -x) return {Vec3{0}, z, y};
-  if (n == y) return {Vec3{0}, z, x};
-  if (n == -y) return {Vec3{0}, x, z};
-  if (n == z) return {Vec3{0}, x, y};
-  if (n == -z) return {Vec3{0}, y, x};
+  if (const auto axes = axisPlaneAxes(s.normal)) return {Vec3{0}, axes->first, axes->second};
   size_t longest = 0;
   double best = -1;
   for (size_t i = 0; i < s.outer.size(); ++i) {
@@ -78,6 +71,17 @@ std::vector<mesher::Vec2> planeVertices(const Surface& surface, const std::vecto
   vertices.reserve(positions.size());
   for (const Vec3& p : positions) vertices.push_back(frame.project(p));
   return vertices;
+}
+
+std::optional<std::pair<Vec3, Vec3>> axisPlaneAxes(const Vec3& n) {
+  const Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  if (n == x) return std::pair{y, z};
+  if (n == -x) return std::pair{z, y};
+  if (n == y) return std::pair{z, x};
+  if (n == -y) return std::pair{x, z};
+  if (n == z) return std::pair{x, y};
+  if (n == -z) return std::pair{y, x};
+  return std::nullopt;
 }
 
 SurfaceMesh meshSurface(const Surface& surface) {
