@@ -246,15 +246,20 @@ class GltfImporter {
         const tinygltf::Value& value = ext->second.Get("emissiveStrength");
         if (value.IsNumber()) strength = value.GetNumberAsDouble();
       }
-      material.emission = Vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * strength * sidecar_.emissionScale;
+      material.emission = Vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * strength;
       // A model walkrad exported keeps its materials' light in extras (its own are unlit).
       if (const auto reflectance = extrasVec3(m.extras, "reflectance")) material.reflectance = glm::clamp(*reflectance, 0.0, 1.0);
-      if (const auto emission = extrasVec3(m.extras, "emission")) material.emission = *emission * sidecar_.emissionScale;
+      if (const auto emission = extrasVec3(m.extras, "emission")) material.emission = *emission;
       for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(material.reflectance[c])) fail(Diag::NotFinite, place + ".pbrMetallicRoughness.baseColorFactor");
         if (!(material.emission[c] >= 0 && material.emission[c] <= kMaxEmission))
           fail(Diag::OutOfRange, place + ".emissiveFactor", "emission must lie in 0..1e6");
       }
+      // The model's light is in range; scaled out of it, the sidecar's scale is what is wrong.
+      material.emission *= sidecar_.emissionScale;
+      if (glm::any(glm::greaterThan(material.emission, Vec3(kMaxEmission))))
+        throw SceneError(Diag::OutOfRange, sidecarFile_, "emission_scale",
+                         "takes " + place + "'s emission beyond 1e6 (" + material.name + ")");
       bool omit = false, twoSided = false;
       if (const auto o = sidecar_.materials.find(m.name); o != sidecar_.materials.end()) {
         if (o->second.reflectance) material.reflectance = *o->second.reflectance;

@@ -154,6 +154,19 @@ TEST(GltfErrors, SidecarNamesAreChecked) {
   EXPECT_EQ(diagOf([&] { loadGltf(model, {"", "/nonexistent/x.walkrad.json"}); }, &what), Diag::FileUnreadable);
 }
 
+// A sidecar's emission scale that takes a model's light out of range is the sidecar's fault.
+TEST(GltfErrors, AnEmissionScaleTooLargeIsTheSidecars) {
+  GltfModel m = smallModel();
+  m.materials[0].emissive = Vec3{2, 2, 2};
+  const std::string model = writeFile("sidecar-scale.gltf", test::gltfText(m));
+  writeFile("sidecar-scale.walkrad.json", R"({"emission_scale": 1000000})");
+  std::string what;
+  EXPECT_EQ(diagOf([&] { loadGltf(model); }, &what), Diag::OutOfRange);
+  EXPECT_NE(what.find("sidecar-scale.walkrad.json: emission_scale"), std::string::npos) << what;
+  writeFile("sidecar-scale.walkrad.json", R"({"emission_scale": 1000})");
+  EXPECT_DOUBLE_EQ(loadGltf(model).materials[0].emission.x, 2000);
+}
+
 TEST(GltfErrors, ModelOptionsAreRefusedForSceneFiles) {
   std::string what;
   EXPECT_EQ(diagOf([&] { loadScene(std::string(WALKRAD_ASSETS) + "/cornell.json", {"m", ""}); }, &what), Diag::GltfOnly);
