@@ -123,18 +123,22 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
   for (int32_t q : fresh) emitLeaf(q, delta);
 
   // Neighbours whose border gained or lost a T-vertex are emitted again; the rest keep theirs.
-  std::vector<int32_t> across;
+  // A leaf's ring also depends on leaves two steps away (a wedge handed over takes points from
+  // the giver's far side: wedge_handover.h), so neighbours of neighbours are looked at too.
+  std::vector<int32_t> near;
   for (int32_t q : fresh)
-    for (Side side : kSides) {
-      across.clear();
-      tree.neighbors(q, side, across);
-      for (int32_t n : across) {
-        if (std::binary_search(fresh.begin(), fresh.end(), n)) continue;
-        if (emitter_->ringIds(n) == leafRings_[static_cast<size_t>(n)]) continue;
-        removeLeafElements(n, delta);
-        emitLeaf(n, delta);
-      }
-    }
+    for (Side side : kSides) tree.neighbors(q, side, near);
+  const size_t firstStep = near.size();
+  for (size_t i = 0; i < firstStep; ++i)
+    for (Side side : kSides) tree.neighbors(near[i], side, near);
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  for (int32_t n : near) {
+    if (std::binary_search(fresh.begin(), fresh.end(), n)) continue;
+    if (emitter_->ringIds(n) == leafRings_[static_cast<size_t>(n)]) continue;
+    removeLeafElements(n, delta);
+    emitLeaf(n, delta);
+  }
   delta.firstNewVertex = firstNewVertex;
   delta.vertexCount = static_cast<uint32_t>(vertices().size());
   return delta;

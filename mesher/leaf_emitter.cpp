@@ -112,7 +112,7 @@ class PointIds {
 };
 
 LeafEmitter::LeafEmitter(const PolygonWithHoles& polygon, const PolygonTree& built, size_t expectedLeaves)
-    : built_(built), ids_(std::make_unique<PointIds>()), regions_(built.tree) {
+    : built_(built), ids_(std::make_unique<PointIds>()), regions_(built) {
   reset(polygon, expectedLeaves);
 }
 
@@ -148,6 +148,7 @@ LeafEmitter::~LeafEmitter() = default;
 void LeafEmitter::emitAll(std::vector<std::array<uint32_t, 4>>& out) {
   eastAndNorth_.resize(built_.tree.quadrants.size());
   inOrder_ = true;
+  handedOver_ = false;
   built_.tree.forEachLeafWithAdjacent([&](int32_t q, const std::array<int32_t, 4>& adjacent) { emit(q, &adjacent, out); });
   inOrder_ = false;
 }
@@ -225,11 +226,16 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
   bool added;
   for (const RegionPoint& p : region.ring) {
     uint32_t id = Mesh::kNone;
+    const bool onBorder = (p.at.x == x0 || p.at.x == x1) ? (p.at.y >= y0 && p.at.y <= y1)
+                                                          : (p.at.y == y0 || p.at.y == y1) && p.at.x >= x0 && p.at.x <= x1;
     if (p.inputVertex >= 0) {
       id = inputToMesh_[static_cast<size_t>(p.inputVertex)];
-    } else if (!inOrder_) {
+    } else if (!inOrder_ || !onBorder) {
+      // Off the border only a handed-over wedge puts points (wedge_handover.h), which the
+      // tree order does not foresee: they go in the table.
       id = ids_->findOrAdd(p.at, added);
       if (added) vertices_.push_back(built_.frame.toPlane(p.at));
+      handedOver_ = handedOver_ || (inOrder_ && added);
     } else if ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0)) {
       // New (see inOrder_), unless it is the leaf's input vertex or this ring had it already
       // (a template's ring is known to be free of both).
@@ -238,6 +244,7 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
       if (region.templateKey < 0)
         for (size_t i = 0; i < ring_.size() && id == Mesh::kNone; ++i)
           if (ring_[i] == p.at) id = ringIds_[i];
+      if (id == Mesh::kNone && handedOver_) id = ids_->find(p.at);
       // A point at a recorded position is found there; any other one goes in the table.
       if (id == Mesh::kNone) id = newPoint(p.at, eastOrNorthPosition(tree, leaf, p.at) < 0);
     } else {

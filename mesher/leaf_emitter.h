@@ -75,6 +75,9 @@ class LeafEmitter {
   // it that came earlier, and stays out of the point table; so does an interior square's inner
   // point, which no other leaf touches. Everything else is listed as before.
   bool inOrder_ = false;
+  // Set once emitAll has listed a point off a leaf's border (a handed-over wedge's): a leaf
+  // meeting it later on its east or north side must look it up instead of taking it as new.
+  bool handedOver_ = false;
   // Per quadrant, the ids on its east and north sides: south-east corner, east midpoint,
   // north-east corner, north midpoint, north-west corner (0xffffffff: none there). Written for
   // every leaf emitAll meets that is not Outside, read only for such leaves it has passed.

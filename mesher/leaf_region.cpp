@@ -1,16 +1,13 @@
 #include "mesher/leaf_region.h"
 
+#include "mesher/wedge_handover.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace mesher {
 
 namespace {
-
-double snapToGrid(double v, double tolerance) {
-  const double r = std::round(v);
-  return std::abs(v - r) <= tolerance ? r : v;
-}
 
 // The square's border as a line parameter running counter-clockwise from the lower-left corner.
 struct Border {
@@ -42,17 +39,6 @@ Clip clipToSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, double y1) {
     if (p[k] > 0 && r < c.t1) c.t1 = r, c.exitSide = k;
   }
   return c;
-}
-
-Vec2 onSideLine(Vec2 a, Vec2 b, int side, double x0, double y0, double x1, double y1, double snap) {
-  const double line = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
-  if (side < 2) {
-    // Always interpolate from the edge's own start so both leaves of the line agree.
-    const double y = a.y + (line - a.x) * (b.y - a.y) / (b.x - a.x);
-    return {line, snapToGrid(std::clamp(y, y0, y1), snap)};
-  }
-  const double x = a.x + (line - a.y) * (b.x - a.x) / (b.y - a.y);
-  return {snapToGrid(std::clamp(x, x0, x1), snap), line};
 }
 
 // The template key's bit for each side, in Side order (West, East, South, North).
@@ -171,12 +157,16 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   std::vector<RegionPoint>& path = path_;
   path.clear();
   Vec2 hinge{0};
+  int entrySide = -1, exitSide = -1;
   if (leaf.edgeCount > 0) {
     auto crossing = [&](uint32_t e, bool entry) {
       const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
       const Clip c = clipToSquare(a, b, x0, y0, x1, y1);
       const int side = entry ? c.entrySide : c.exitSide;
-      return RegionPoint{onSideLine(a, b, side, x0, y0, x1, y1, tree.gridSnap)};
+      (entry ? entrySide : exitSide) = side;
+      const bool vertical = side < 2;
+      const double line = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
+      return RegionPoint{crossingOnLine(a, b, vertical, line, vertical ? y0 : x0, vertical ? y1 : x1, tree.gridSnap)};
     };
     if (leaf.vertex >= 0) {
       const auto v = static_cast<uint32_t>(leaf.vertex);
@@ -252,12 +242,62 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     region.pathPoints = 0;
     return region;
   }
+  if (leaf.vertex < 0 && leaf.edgeCount == 1) {
+    handOverWedge(q, entrySide, exitSide, hinge);
+    if (region.ring.empty()) return region;
+  }
   for (size_t i = 0; i < region.ring.size(); ++i)
     if (region.ring[i].at == hinge) region.hinge = static_cast<int>(i);
   at_.clear();
   for (const RegionPoint& p : region.ring) at_.push_back(p.at);
   region.inner = centroid(at_);
   return region;
+}
+
+void LeafRegionBuilder::handOverWedge(int32_t q, int entrySide, int exitSide, Vec2& hinge) {
+  LeafRegion& region = region_;
+  std::vector<RegionPoint>& ring = region.ring;
+  if (region.pathPoints != 2) return;
+  // The entry crossing is ring[0], its neighbour along the border the last point; the exit
+  // crossing is ring[1], its neighbour the next one. A leaf holding one edge alone has at most
+  // one shallow crossing: the edge leaves through a side it meets steeply.
+  for (size_t at : {size_t{0}, size_t{1}}) {
+    const size_t neighbour = at == 0 ? ring.size() - 1 : 2;
+    const std::optional<WedgeHandover> handover =
+        wedgeHandover(tree_, frame_.planePerTree(), q, tree_[q].edges[0], at == 0 ? entrySide : exitSide, ring[at].at, ring[neighbour].at);
+    if (!handover) continue;
+    if (hinge == ring[at].at) hinge = handover->mPrime;
+    ring[at] = {handover->mPrime};
+    if (handover->taker == q) {
+      // M -> M' joins the ring where Q was: after M, or (entering) before it.
+      between_.clear();
+      pointsBetween(tree_, *handover, between_);
+      if (at == 0) {
+        for (const Vec2& p : between_) ring.push_back({p});
+      } else {
+        std::vector<RegionPoint> chain;
+        for (auto p = between_.rbegin(); p != between_.rend(); ++p) chain.push_back({*p});
+        ring.insert(ring.begin() + 2, chain.begin(), chain.end());
+      }
+      return;
+    }
+    // The giver keeps the rest of its wedge, if any: nothing when M' is where the edge leaves
+    // it, along the line through M -> M'.
+    const size_t other = 1 - at;
+    if (ring[other].at == ring[at].at) {
+      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(at));
+      region.pathPoints = 1;
+    }
+    const bool acrossX = handover->m.x == handover->mPrime.x;
+    const bool flat = std::all_of(ring.begin(), ring.end(), [&](const RegionPoint& p) {
+      return acrossX ? p.at.x == handover->m.x : p.at.y == handover->m.y;
+    });
+    if (flat || ring.size() < 3) {
+      ring.clear();
+      region.pathPoints = 0;
+    }
+    return;
+  }
 }
 
 }  // namespace mesher

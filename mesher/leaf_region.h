@@ -34,18 +34,26 @@ struct LeafRegion {
 // Builds the region of leaf q: its corners and the T-vertices of finer neighbours on the inside
 // part of its border, the crossings of its stored edges and its vertex. Crossings are computed
 // from the edge and the grid line alone, so the leaves on both sides of a line agree exactly;
-// crossings within the tree's gridSnap of a grid point snap to it. The builder keeps its scratch memory
-// from leaf to leaf; a returned region lives until the next build.
+// crossings within the tree's gridSnap of a grid point snap to it. Where an edge meets a grid
+// line too shallowly, the wedge it leaves is handed across the line (wedge_handover.h). The
+// builder keeps its scratch memory from leaf to leaf; a returned region lives until the next
+// build.
 class LeafRegionBuilder {
  public:
-  explicit LeafRegionBuilder(const Quadtree& tree) : tree_(tree) {}
+  // Angles are judged in the plane of `built`'s frame (which may change: a tree rebuilt in place).
+  explicit LeafRegionBuilder(const PolygonTree& built) : tree_(built.tree), frame_(built.frame) {}
   // `adjacent`, when given, is tree.adjacent(q, side) for West, East, South, North.
   const LeafRegion& build(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
 
  private:
+  // A shallow crossing's wedge handed over (wedge_handover.h): the region loses it or gains it.
+  void handOverWedge(int32_t q, int entrySide, int exitSide, Vec2& hinge);
+
   const Quadtree& tree_;
+  const TreeFrame& frame_;
   LeafRegion region_;
   std::vector<RegionPoint> onBorder_, path_, ring_;
+  std::vector<Vec2> between_;
   std::vector<int32_t> across_;
   std::vector<std::pair<double, RegionPoint>> walk_;
   Ring2 at_;

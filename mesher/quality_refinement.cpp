@@ -1,6 +1,7 @@
 #include "mesher/quality_refinement.h"
 
 #include "mesher/balance.h"
+#include "mesher/wedge_handover.h"
 
 #include <algorithm>
 
@@ -60,6 +61,21 @@ size_t QualityRefiner::refine() {
       seeds_.resize(firstSeed);
       continue;
     }
+    ++splits;
+  }
+  // Leaves of the coarsest size that would take a shallow wedge are split first: grown by it,
+  // their elements would be longer than the patch size.
+  takers_.clear();
+  if (hasShallowEdge(tree.input, built_.frame.planePerTree())) {
+    tree.leaves(leaves_);
+    for (int32_t q : leaves_)
+      if (tree[q].status == QuadStatus::Boundary) coarseTakers(tree, built_.frame.planePerTree(), q, takers_);
+  }
+  std::sort(takers_.begin(), takers_.end());
+  takers_.erase(std::unique(takers_.begin(), takers_.end()), takers_.end());
+  for (int32_t q : takers_) {
+    if (!tree[q].isLeaf() || !tree.splitLeaf(q)) continue;
+    tree.leavesBelow(q, seeds_);
     ++splits;
   }
   if (!seeds_.empty()) balanceAround(tree, seeds_);

@@ -16,11 +16,12 @@ namespace mesher {
 
 // Splits the leaves of a complete and balanced tree whose input vertex's region falls short of
 // the bound (judged as LeafEmitter meshes it) when the vertex's leaf a few levels down reaches
-// it, then rebalances. Returns how many leaves were split. The refiner keeps its scratch memory
+// it, and the coarsest leaves that would take a shallow wedge (wedge_handover.h), then
+// rebalances. Returns how many leaves were split. The refiner keeps its scratch memory
 // from polygon to polygon rebuilt into the same PolygonTree.
 class QualityRefiner {
  public:
-  explicit QualityRefiner(PolygonTree& built) : built_(built), regions_(built.tree) {}
+  explicit QualityRefiner(PolygonTree& built) : built_(built), regions_(built) {}
   size_t refine();
 
  private:
@@ -29,7 +30,7 @@ class QualityRefiner {
   PolygonTree& built_;
   LeafRegionBuilder regions_;
   SubdomainRemover remover_;
-  std::vector<int32_t> leaves_, seeds_;
+  std::vector<int32_t> leaves_, seeds_, takers_;
   std::vector<Vec2> ring_;
 };
 

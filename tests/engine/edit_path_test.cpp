@@ -55,25 +55,26 @@ double relativeDifference(const radiosity::Solver& a, const radiosity::Solver& b
 }
 
 // The Cornell box's short block moved away and back: the light converges to what it was (within
-// 0.5%, the bound).
+// 0.5%, the bound). Solved to 0.2% unshot: at 1%, what is still unshot (which depends on
+// the order of shots, and so on the mesh) alone moves the comparison by half a percent.
 TEST(EditPath, MovingAnObjectAndBackRestoresTheSolution) {
   SceneEditor editor = editorFor("cornell.json");
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = 2;
   const auto input = radiosityInput(editor.scene(), editor.meshed());
   radiosity::Solver unmoved(input, settings);
-  unmoved.solve(0.01);
+  unmoved.solve(0.002);
   auto solver = std::make_unique<radiosity::Solver>(input, settings);
-  solver->solve(0.01);
+  solver->solve(0.002);
   const uint32_t block = *editor.findObject("short block");
   const ObjectPose home = poseOf(editor.scene().objects[block]);
   editor.setPose(block, {home.position + Vec3{120, 0, 100}, home.rotateYDeg + 30});
   applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
-  solver->solve(0.01);
+  solver->solve(0.002);
   const double moved = relativeDifference(*solver, unmoved, false);
   editor.setPose(block, home);
   applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
-  solver->solve(0.01);
+  solver->solve(0.002);
   EXPECT_GT(moved, 0.01);  // the move itself changed the light
   EXPECT_LT(relativeDifference(*solver, unmoved, true), 0.005);
 }

@@ -26,7 +26,7 @@ PolygonWithHoles notchCornerIn(double fx, double fy) {
 // Whether the leaf holding the reflex corner meshes within the bound, as the emitter would.
 bool cornerLeafReachesBound(const PolygonTree& built) {
   const Vec2 corner = built.tree.input.vertices[3];
-  LeafRegionBuilder regions(built.tree);
+  LeafRegionBuilder regions(built);
   const LeafRegion& region = regions.build(built.tree.leafAt(corner));
   std::vector<Vec2> ring;
   for (const RegionPoint& p : region.ring) ring.push_back(p.at);

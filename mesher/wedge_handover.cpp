@@ -1,0 +1,152 @@
+#include "mesher/wedge_handover.h"
+
+#include "mesher/mesher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace mesher {
+
+namespace {
+
+// Which way the acute inside wedge lies at a crossing of an edge with a grid line: `side` is +1
+// when it is on the side of larger coordinates across the line, `along` the direction from the
+// crossing along the line into it.
+struct WedgeSide {
+  int side = 0, along = 0;
+};
+
+// The wedge at a crossing of edge a -> b (inside on its left) with a vertical (x = const) or
+// horizontal line, when the edge meets the line at less than the bound in the plane.
+std::optional<WedgeSide> shallowWedge(Vec2 a, Vec2 b, bool vertical, Vec2 planePerTree) {
+  static const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
+  const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
+  const Vec2 d = b - a, plane = d * planePerTree;
+  if (!(std::abs(plane[acrossAxis]) < kTanBound * std::abs(plane[alongAxis])) || d[acrossAxis] == 0) return {};
+  // The edge's ray into the side of larger coordinates, and the direction along the line that
+  // makes an acute angle with it: the wedge between them is inside when it lies left of the
+  // edge, else the wedge on the other side is.
+  const double rayAlong = d[acrossAxis] > 0 ? d[alongAxis] : -d[alongAxis];
+  const int u = rayAlong > 0 ? 1 : -1;
+  const double leftOfEdge = vertical ? d.x * u : -d.y * u;  // cross(d, u along the line)
+  if (leftOfEdge > 0) return WedgeSide{1, u};
+  return WedgeSide{-1, -u};
+}
+
+// Which side of its own line a leaf lies on: +1 when the line is its west or south side.
+int leafSideOf(int side) { return side == 0 || side == 2 ? 1 : -1; }
+
+bool holdsOnlyEdge(const Quadrant& leaf, uint32_t edge) {
+  return leaf.isLeaf() && leaf.vertex < 0 && leaf.edgeCount == 1 && leaf.edges[0] == edge;
+}
+
+// The leaf across the line through q (q strictly between grid points), towards +1 or -1.
+int32_t leafAcross(const Quadtree& tree, Vec2 q, bool vertical, int towards) {
+  Vec2 probe = q;
+  (vertical ? probe.x : probe.y) += 0.5 * towards;
+  return tree.leafAt(probe);
+}
+
+}  // namespace
+
+Vec2 crossingOnLine(Vec2 a, Vec2 b, bool vertical, double line, double lo, double hi, double snap) {
+  auto snapToGrid = [snap](double v) {
+    const double r = std::round(v);
+    return std::abs(v - r) <= snap ? r : v;
+  };
+  // Always interpolated from the edge's own start so both leaves of the line agree.
+  if (vertical) return {line, snapToGrid(std::clamp(a.y + (line - a.x) * (b.y - a.y) / (b.x - a.x), lo, hi))};
+  return {snapToGrid(std::clamp(a.x + (line - a.y) * (b.x - a.x) / (b.y - a.y), lo, hi)), line};
+}
+
+std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTree, int32_t leaf, uint32_t edge,
+                                           int side, Vec2 q, Vec2 m) {
+  const bool vertical = side < 2;
+  const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
+  // A crossing on a grid point (snapped there) touches more leaves than two.
+  if (q[alongAxis] == std::round(q[alongAxis]) || m[acrossAxis] != q[acrossAxis]) return {};
+  const Vec2 a = tree.input.vertices[tree.input.edges[edge][0]], b = tree.input.vertices[tree.input.edges[edge][1]];
+  const std::optional<WedgeSide> wedge = shallowWedge(a, b, vertical, planePerTree);
+  if (!wedge || (m[alongAxis] - q[alongAxis]) * wedge->along <= 0) return {};
+  const int32_t other = leafAcross(tree, q, vertical, -leafSideOf(side));
+  if (other < 0) return {};
+  WedgeHandover handover;
+  const bool leafGives = leafSideOf(side) == wedge->side;
+  handover.giver = leafGives ? leaf : other;
+  handover.taker = leafGives ? other : leaf;
+  const Quadrant& giver = tree[handover.giver];
+  const Quadrant& taker = tree[handover.taker];
+  if (!holdsOnlyEdge(giver, edge) || !holdsOnlyEdge(taker, edge) || taker.level <= tree.uniformDepth) return {};
+  // M' lies on the giver's square, computed as the giver computes a crossing of that line.
+  const double s = static_cast<double>(tree.edgeLength(giver));
+  const double lo = static_cast<double>(acrossAxis == 0 ? giver.x : giver.y);
+  const double line = m[alongAxis];
+  const double exact = a[acrossAxis] + (line - a[alongAxis]) * (b[acrossAxis] - a[acrossAxis]) / (b[alongAxis] - a[alongAxis]);
+  if (exact < lo || exact > lo + s) return {};
+  handover.m = m;
+  handover.mPrime = crossingOnLine(a, b, !vertical, line, lo, lo + s, tree.gridSnap);
+  if (handover.mPrime == m) return {};
+  return handover;
+}
+
+void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vector<Vec2>& out) {
+  const Quadrant& giver = tree[handover.giver];
+  const double s = static_cast<double>(tree.edgeLength(giver));
+  const double x0 = static_cast<double>(giver.x), y0 = static_cast<double>(giver.y);
+  const Vec2 m = handover.m, to = handover.mPrime;
+  const bool vertical = m.x == to.x;  // M -> M' runs along x = const
+  const double line = vertical ? m.x : m.y;
+  const double low = vertical ? x0 : y0;
+  // Only along one of the giver's sides can its neighbours put points on M -> M'.
+  if (line != low && line != low + s) return;
+  const Side side = vertical ? (line == x0 ? Side::West : Side::East) : (line == y0 ? Side::South : Side::North);
+  std::vector<int32_t> across;
+  tree.neighbors(handover.giver, side, across);
+  const size_t first = out.size();
+  const double from = vertical ? m.y : m.x, until = vertical ? to.y : to.x;
+  for (int32_t n : across) {
+    const Quadrant& other = tree[n];
+    if (other.level <= giver.level || other.status == QuadStatus::Outside) continue;
+    const double start = static_cast<double>(vertical ? other.y : other.x);
+    for (double t : {start, start + static_cast<double>(tree.edgeLength(other))})
+      if ((t - from) * (until - t) > 0) out.push_back(vertical ? Vec2{line, t} : Vec2{t, line});
+  }
+  auto distance = [&](Vec2 p) { return std::abs((vertical ? p.y : p.x) - from); };
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [&](Vec2 p, Vec2 r) { return distance(p) < distance(r); });
+  out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
+}
+
+bool hasShallowEdge(const QuadtreeInput& input, Vec2 planePerTree) {
+  for (uint32_t e = 0; e < input.edges.size(); ++e) {
+    if (!input.active(e)) continue;
+    const Vec2 a = input.vertices[input.edges[e][0]], b = input.vertices[input.edges[e][1]];
+    if (shallowWedge(a, b, true, planePerTree) || shallowWedge(a, b, false, planePerTree)) return true;
+  }
+  return false;
+}
+
+void coarseTakers(const Quadtree& tree, Vec2 planePerTree, int32_t q, std::vector<int32_t>& out) {
+  const Quadrant& leaf = tree[q];
+  if (leaf.vertex >= 0 || leaf.edgeCount != 1) return;
+  const uint32_t edge = leaf.edges[0];
+  const Vec2 a = tree.input.vertices[tree.input.edges[edge][0]], b = tree.input.vertices[tree.input.edges[edge][1]];
+  const double s = static_cast<double>(tree.edgeLength(leaf));
+  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y);
+  for (int side = 0; side < 4; ++side) {
+    const bool vertical = side < 2;
+    const std::optional<WedgeSide> wedge = shallowWedge(a, b, vertical, planePerTree);
+    if (!wedge || wedge->side != leafSideOf(side)) continue;
+    const double line = side == 0 ? x0 : side == 1 ? x0 + s : side == 2 ? y0 : y0 + s;
+    const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
+    if ((a[acrossAxis] - line) * (b[acrossAxis] - line) >= 0) continue;  // the edge does not cross the line
+    const double start = alongAxis == 0 ? x0 : y0;
+    const Vec2 crossing = crossingOnLine(a, b, vertical, line, start, start + s, tree.gridSnap);
+    if (crossing[alongAxis] <= start || crossing[alongAxis] >= start + s || crossing[alongAxis] == std::round(crossing[alongAxis]))
+      continue;
+    const int32_t taker = leafAcross(tree, crossing, vertical, -leafSideOf(side));
+    if (taker >= 0 && holdsOnlyEdge(tree[taker], edge) && tree[taker].level == tree.uniformDepth) out.push_back(taker);
+  }
+}
+
+}  // namespace mesher

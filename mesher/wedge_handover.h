@@ -1,0 +1,48 @@
+// Shallow crossings, beyond the thesis: where an input edge meets a grid line at less than
+// kAngleBoundDeg (in the plane), the leaf on one side of the line holds the inside as a wedge
+// with that angle at the crossing Q, and no meshing of that leaf alone can avoid it: the angle
+// is the same at every level. The wedge's first triangle (Q, M, M': M the next grid point
+// along the line, M' the edge's point straight across from M) is handed to the leaf across the
+// line at Q, whose inside there is the obtuse side. The taker's ring drops Q and runs
+// M -> M' instead (corner 90 - theta), the giver's drops Q for M' (corners 90 and 90 + theta).
+// Both leaves decide from the same data, so they always agree.
+#pragma once
+
+#include "mesher/quadtree.h"
+
+#include <optional>
+#include <vector>
+
+namespace mesher {
+
+struct WedgeHandover {
+  int32_t giver = -1, taker = -1;
+  Vec2 m{0}, mPrime{0};  // tree coordinates; M' is computed as leaf regions compute crossings
+};
+
+// The handover at crossing `q` of edge `edge` with side `side` (0 west, 1 east, 2 south,
+// 3 north) of leaf `leaf`, whose ring runs from q along that side to the grid point `m`; nothing
+// when the crossing is not shallow or the wedge cannot be handed over whole: both leaves must
+// hold that edge alone (no vertex), and the taker must be finer than the uniform depth, so its
+// grown region stays within a coarsest leaf's extent (the patch size).
+std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTree, int32_t leaf, uint32_t edge,
+                                           int side, Vec2 q, Vec2 m);
+
+// The mesh vertices strictly between M and M' (the T-vertices of the giver's finer neighbours
+// when M -> M' runs along the giver's side), ordered from M to M', appended to `out`.
+void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vector<Vec2>& out);
+
+// Whether some edge meets the grid lines of one axis or the other shallowly (most surfaces are
+// rectangles along the axes: they need no look at their leaves).
+bool hasShallowEdge(const QuadtreeInput& input, Vec2 planePerTree);
+
+// The leaves of a coarsest size (the uniform depth) that would take a shallow wedge from leaf q
+// but are too coarse to, appended to `out`: splitting them lets the wedge be handed over.
+void coarseTakers(const Quadtree& tree, Vec2 planePerTree, int32_t q, std::vector<int32_t>& out);
+
+// The point where edge a -> b meets the grid line x = line (`vertical`) or y = line, from the
+// edge and the line alone (so every leaf computes it bit for bit alike), clamped to [lo, hi]
+// and snapped onto a grid line within `snap`.
+Vec2 crossingOnLine(Vec2 a, Vec2 b, bool vertical, double line, double lo, double hi, double snap);
+
+}  // namespace mesher
