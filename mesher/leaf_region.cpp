@@ -157,13 +157,13 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   std::vector<RegionPoint>& path = path_;
   path.clear();
   Vec2 hinge{0};
-  int entrySide = -1, exitSide = -1;
+  std::array<PathCrossing, 2> crossings{};  // entry, exit
   if (leaf.edgeCount > 0) {
     auto crossing = [&](uint32_t e, bool entry) {
       const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
       const Clip c = clipToSquare(a, b, x0, y0, x1, y1);
       const int side = entry ? c.entrySide : c.exitSide;
-      (entry ? entrySide : exitSide) = side;
+      crossings[entry ? 0 : 1] = {e, side};
       const bool vertical = side < 2;
       const double line = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
       return RegionPoint{crossingOnLine(a, b, vertical, line, vertical ? y0 : x0, vertical ? y1 : x1, tree.gridSnap)};
@@ -242,10 +242,8 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     region.pathPoints = 0;
     return region;
   }
-  if (leaf.vertex < 0 && leaf.edgeCount == 1) {
-    handOverWedge(q, entrySide, exitSide, hinge);
-    if (region.ring.empty()) return region;
-  }
+  handOverWedges(q, crossings, hinge);
+  if (region.ring.empty()) return region;
   for (size_t i = 0; i < region.ring.size(); ++i)
     if (region.ring[i].at == hinge) region.hinge = static_cast<int>(i);
   at_.clear();
@@ -254,49 +252,75 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   return region;
 }
 
-void LeafRegionBuilder::handOverWedge(int32_t q, int entrySide, int exitSide, Vec2& hinge) {
+void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing, 2>& crossings, Vec2& hinge) {
   LeafRegion& region = region_;
   std::vector<RegionPoint>& ring = region.ring;
-  if (region.pathPoints != 2) return;
+  const size_t n = ring.size(), path = region.pathPoints;
+  if (path < 2) return;
   // The entry crossing is ring[0], its neighbour along the border the last point; the exit
-  // crossing is ring[1], its neighbour the next one. A leaf holding one edge alone has at most
-  // one shallow crossing: the edge leaves through a side it meets steeply.
-  for (size_t at : {size_t{0}, size_t{1}}) {
-    const size_t neighbour = at == 0 ? ring.size() - 1 : 2;
-    const std::optional<WedgeHandover> handover =
-        wedgeHandover(tree_, frame_.planePerTree(), q, tree_[q].edges[0], at == 0 ? entrySide : exitSide, ring[at].at, ring[neighbour].at);
-    if (!handover) continue;
-    if (hinge == ring[at].at) hinge = handover->mPrime;
-    ring[at] = {handover->mPrime};
-    if (handover->taker == q) {
-      // M -> M' joins the ring where Q was: after M, or (entering) before it.
-      between_.clear();
-      pointsBetween(tree_, *handover, between_);
-      if (at == 0) {
-        for (const Vec2& p : between_) ring.push_back({p});
-      } else {
-        std::vector<RegionPoint> chain;
-        for (auto p = between_.rbegin(); p != between_.rend(); ++p) chain.push_back({*p});
-        ring.insert(ring.begin() + 2, chain.begin(), chain.end());
-      }
-      return;
+  // crossing is ring[path - 1], its neighbour the next one.
+  std::array<std::optional<WedgeHandover>, 2> handovers;
+  const std::array<size_t, 2> at{0, path - 1}, neighbour{n - 1, path};
+  for (size_t k = 0; k < 2; ++k) {
+    const PathCrossing& c = crossings[k];
+    if (c.side < 0 || neighbour[k] < path || neighbour[k] >= n || ring[at[k]].inputVertex >= 0) continue;
+    handovers[k] = wedgeHandover(tree_, frame_.planePerTree(), q, c.edge, c.side, ring[at[k]].at, ring[neighbour[k]].at);
+  }
+  if (!handovers[0] && !handovers[1]) return;
+  std::vector<RegionPoint>& out = handed_;
+  out.clear();
+  size_t pathKept = 0;
+  bool mPrimeGiven = false;
+  for (size_t i = 0; i < n; ++i) {
+    const size_t k = i == at[0] && handovers[0] ? 0 : i == at[1] && handovers[1] ? 1 : 2;
+    if (k == 2) {
+      out.push_back(ring[i]);
+      pathKept += i < path;
+      continue;
     }
-    // The giver keeps the rest of its wedge, if any: nothing when M' is where the edge leaves
-    // it, along the line through M -> M'.
-    const size_t other = 1 - at;
-    if (ring[other].at == ring[at].at) {
-      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(at));
-      region.pathPoints = 1;
+    const WedgeHandover& h = *handovers[k];
+    const RegionPoint end{h.mPrime, h.vertex};
+    if (hinge == ring[i].at) hinge = h.mPrime;
+    if (h.giver == q) {
+      // The giver keeps what is left of its wedge: it runs V -> M (V is its next path point
+      // already), or from M' on.
+      if (h.vertex < 0) out.push_back(end), ++pathKept, mPrimeGiven = true;
+      continue;
     }
-    const bool acrossX = handover->m.x == handover->mPrime.x;
-    const bool flat = std::all_of(ring.begin(), ring.end(), [&](const RegionPoint& p) {
-      return acrossX ? p.at.x == handover->m.x : p.at.y == handover->m.y;
-    });
-    if (flat || ring.size() < 3) {
-      ring.clear();
-      region.pathPoints = 0;
+    // M -> M' (or V) joins the taker's ring where Q was: after M, or (entering) before it.
+    between_.clear();
+    pointsBetween(tree_, h, between_);
+    out.push_back(end);
+    ++pathKept;
+    if (k == 0) {
+      for (const Vec2& p : between_) ring.push_back({p});  // after M, the last point
+    } else {
+      for (auto p = between_.rbegin(); p != between_.rend(); ++p) out.push_back({*p});
     }
-    return;
+  }
+  // Points the entry's chain added at the end of the old ring.
+  for (size_t i = n; i < ring.size(); ++i) out.push_back(ring[i]);
+  // M' where the edge leaves the giver repeats that crossing.
+  ring.clear();
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (!ring.empty() && ring.back().at == out[i].at) {
+      pathKept -= i < pathKept;
+      continue;
+    }
+    ring.push_back(out[i]);
+  }
+  while (ring.size() > 1 && ring.front().at == ring.back().at) ring.pop_back();
+  region.pathPoints = std::min(pathKept, ring.size());
+  // A giver left with points on the line through M -> M' alone has nothing left.
+  bool flat = false;
+  for (const std::optional<WedgeHandover>& h : handovers)
+    if (mPrimeGiven && h && h->giver == q && h->vertex < 0) {
+      const bool acrossX = h->m.x == h->mPrime.x;
+      flat = flat || std::all_of(ring.begin(), ring.end(), [&](const RegionPoint& p) { return acrossX ? p.at.x == h->m.x : p.at.y == h->m.y; });
+    }
+  if (flat || ring.size() < 3) {
+    ring.clear();
+    region.pathPoints = 0;
   }
 }
 

@@ -46,13 +46,19 @@ class LeafRegionBuilder {
   const LeafRegion& build(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
 
  private:
-  // A shallow crossing's wedge handed over (wedge_handover.h): the region loses it or gains it.
-  void handOverWedge(int32_t q, int entrySide, int exitSide, Vec2& hinge);
+  // Where the polygon's boundary enters (or leaves) the leaf: the edge and the side (0 west,
+  // 1 east, 2 south, 3 north; -1 when it does not cross the border).
+  struct PathCrossing {
+    uint32_t edge = 0;
+    int side = -1;
+  };
+  // Shallow crossings' wedges handed over (wedge_handover.h): the region loses or gains them.
+  void handOverWedges(int32_t q, const std::array<PathCrossing, 2>& crossings, Vec2& hinge);
 
   const Quadtree& tree_;
   const TreeFrame& frame_;
   LeafRegion region_;
-  std::vector<RegionPoint> onBorder_, path_, ring_;
+  std::vector<RegionPoint> onBorder_, path_, ring_, handed_;
   std::vector<Vec2> between_;
   std::vector<int32_t> across_;
   std::vector<std::pair<double, RegionPoint>> walk_;

@@ -48,6 +48,40 @@ int32_t leafAcross(const Quadtree& tree, Vec2 q, bool vertical, int towards) {
   return tree.leafAt(probe);
 }
 
+// Calls visit(leaf, ends) for each leaf across the giver's side, finer than the giver and not
+// Outside, that meets M -> M' (when that runs along one of the giver's sides), with those of
+// its two ends on the side that lie strictly between M and M'.
+template <typename Visit>
+void forEachPointBetween(const Quadtree& tree, const WedgeHandover& handover, Visit visit) {
+  const Quadrant& giver = tree[handover.giver];
+  const double s = static_cast<double>(tree.edgeLength(giver));
+  const double x0 = static_cast<double>(giver.x), y0 = static_cast<double>(giver.y);
+  const Vec2 m = handover.m, to = handover.mPrime;
+  if (m.x != to.x && m.y != to.y) return;  // through the giver's inside (to its vertex)
+  const bool vertical = m.x == to.x;  // M -> M' runs along x = const
+  const double line = vertical ? m.x : m.y;
+  const double low = vertical ? x0 : y0;
+  // Only along one of the giver's sides can its neighbours put points on M -> M'.
+  if (line != low && line != low + s) return;
+  const Side side = vertical ? (line == x0 ? Side::West : Side::East) : (line == y0 ? Side::South : Side::North);
+  std::vector<int32_t> across;
+  tree.neighbors(handover.giver, side, across);
+  const double from = vertical ? m.y : m.x, until = vertical ? to.y : to.x;
+  const double lo = std::min(from, until), hi = std::max(from, until);
+  std::vector<Vec2> ends;
+  for (int32_t n : across) {
+    const Quadrant& other = tree[n];
+    if (other.level <= giver.level || other.status == QuadStatus::Outside) continue;
+    const double start = static_cast<double>(vertical ? other.y : other.x);
+    const double end = start + static_cast<double>(tree.edgeLength(other));
+    if (end <= lo || start >= hi) continue;
+    ends.clear();
+    for (double t : {start, end})
+      if (t > lo && t < hi) ends.push_back(vertical ? Vec2{line, t} : Vec2{t, line});
+    visit(other, ends);
+  }
+}
+
 }  // namespace
 
 Vec2 crossingOnLine(Vec2 a, Vec2 b, bool vertical, double line, double lo, double hi, double snap) {
@@ -77,41 +111,42 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
   handover.taker = leafGives ? other : leaf;
   const Quadrant& giver = tree[handover.giver];
   const Quadrant& taker = tree[handover.taker];
-  if (!holdsOnlyEdge(giver, edge) || !holdsOnlyEdge(taker, edge) || taker.level <= tree.uniformDepth) return {};
+  if (!holdsOnlyEdge(taker, edge) || taker.level <= tree.uniformDepth) return {};
+  if (giver.vertex < 0 && !holdsOnlyEdge(giver, edge)) return {};
+  handover.m = m;
+  // A vertex leaf holds only edges ending at its vertex: the wedge ends there when the vertex
+  // comes before M' does, and the triangle handed over is (Q, M, V).
+  if (giver.vertex >= 0) {
+    const Vec2 v = tree.input.vertices[static_cast<size_t>(giver.vertex)];
+    if ((m[alongAxis] - v[alongAxis]) * wedge->along >= 0) {
+      handover.vertex = giver.vertex;
+      handover.mPrime = v;
+      return handover;
+    }
+  }
   // M' lies on the giver's square, computed as the giver computes a crossing of that line.
   const double s = static_cast<double>(tree.edgeLength(giver));
   const double lo = static_cast<double>(acrossAxis == 0 ? giver.x : giver.y);
   const double line = m[alongAxis];
   const double exact = a[acrossAxis] + (line - a[alongAxis]) * (b[acrossAxis] - a[acrossAxis]) / (b[alongAxis] - a[alongAxis]);
   if (exact < lo || exact > lo + s) return {};
-  handover.m = m;
   handover.mPrime = crossingOnLine(a, b, !vertical, line, lo, lo + s, tree.gridSnap);
   if (handover.mPrime == m) return {};
+  // The taker's elements along M -> M' meet the leaves across the giver's side there: those
+  // must be at most one level finer than the taker, as balance keeps side neighbours.
+  bool graded = true;
+  forEachPointBetween(tree, handover,
+                      [&](const Quadrant& across, const std::vector<Vec2>&) { graded = graded && across.level <= taker.level + 1; });
+  if (!graded) return {};
   return handover;
 }
 
 void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vector<Vec2>& out) {
-  const Quadrant& giver = tree[handover.giver];
-  const double s = static_cast<double>(tree.edgeLength(giver));
-  const double x0 = static_cast<double>(giver.x), y0 = static_cast<double>(giver.y);
-  const Vec2 m = handover.m, to = handover.mPrime;
-  const bool vertical = m.x == to.x;  // M -> M' runs along x = const
-  const double line = vertical ? m.x : m.y;
-  const double low = vertical ? x0 : y0;
-  // Only along one of the giver's sides can its neighbours put points on M -> M'.
-  if (line != low && line != low + s) return;
-  const Side side = vertical ? (line == x0 ? Side::West : Side::East) : (line == y0 ? Side::South : Side::North);
-  std::vector<int32_t> across;
-  tree.neighbors(handover.giver, side, across);
   const size_t first = out.size();
-  const double from = vertical ? m.y : m.x, until = vertical ? to.y : to.x;
-  for (int32_t n : across) {
-    const Quadrant& other = tree[n];
-    if (other.level <= giver.level || other.status == QuadStatus::Outside) continue;
-    const double start = static_cast<double>(vertical ? other.y : other.x);
-    for (double t : {start, start + static_cast<double>(tree.edgeLength(other))})
-      if ((t - from) * (until - t) > 0) out.push_back(vertical ? Vec2{line, t} : Vec2{t, line});
-  }
+  forEachPointBetween(tree, handover, [&](const Quadrant&, const std::vector<Vec2>& ends) { out.insert(out.end(), ends.begin(), ends.end()); });
+  const Vec2 m = handover.m;
+  const bool vertical = m.x == handover.mPrime.x;
+  const double from = vertical ? m.y : m.x;
   auto distance = [&](Vec2 p) { return std::abs((vertical ? p.y : p.x) - from); };
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [&](Vec2 p, Vec2 r) { return distance(p) < distance(r); });
   out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
@@ -128,24 +163,26 @@ bool hasShallowEdge(const QuadtreeInput& input, Vec2 planePerTree) {
 
 void coarseTakers(const Quadtree& tree, Vec2 planePerTree, int32_t q, std::vector<int32_t>& out) {
   const Quadrant& leaf = tree[q];
-  if (leaf.vertex >= 0 || leaf.edgeCount != 1) return;
-  const uint32_t edge = leaf.edges[0];
-  const Vec2 a = tree.input.vertices[tree.input.edges[edge][0]], b = tree.input.vertices[tree.input.edges[edge][1]];
   const double s = static_cast<double>(tree.edgeLength(leaf));
   const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y);
-  for (int side = 0; side < 4; ++side) {
-    const bool vertical = side < 2;
-    const std::optional<WedgeSide> wedge = shallowWedge(a, b, vertical, planePerTree);
-    if (!wedge || wedge->side != leafSideOf(side)) continue;
-    const double line = side == 0 ? x0 : side == 1 ? x0 + s : side == 2 ? y0 : y0 + s;
-    const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
-    if ((a[acrossAxis] - line) * (b[acrossAxis] - line) >= 0) continue;  // the edge does not cross the line
-    const double start = alongAxis == 0 ? x0 : y0;
-    const Vec2 crossing = crossingOnLine(a, b, vertical, line, start, start + s, tree.gridSnap);
-    if (crossing[alongAxis] <= start || crossing[alongAxis] >= start + s || crossing[alongAxis] == std::round(crossing[alongAxis]))
-      continue;
-    const int32_t taker = leafAcross(tree, crossing, vertical, -leafSideOf(side));
-    if (taker >= 0 && holdsOnlyEdge(tree[taker], edge) && tree[taker].level == tree.uniformDepth) out.push_back(taker);
+  for (uint8_t k = 0; k < leaf.edgeCount; ++k) {
+    const uint32_t edge = leaf.edges[k];
+    const Vec2 a = tree.input.vertices[tree.input.edges[edge][0]], b = tree.input.vertices[tree.input.edges[edge][1]];
+    for (int side = 0; side < 4; ++side) {
+      const bool vertical = side < 2;
+      const std::optional<WedgeSide> wedge = shallowWedge(a, b, vertical, planePerTree);
+      if (!wedge || wedge->side != leafSideOf(side)) continue;
+      const double line = side == 0 ? x0 : side == 1 ? x0 + s : side == 2 ? y0 : y0 + s;
+      const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
+      if ((a[acrossAxis] - line) * (b[acrossAxis] - line) >= 0) continue;  // the edge does not cross the line
+      const double start = alongAxis == 0 ? x0 : y0;
+      const Vec2 crossing = crossingOnLine(a, b, vertical, line, start, start + s, tree.gridSnap);
+      if (crossing[alongAxis] <= start || crossing[alongAxis] >= start + s ||
+          crossing[alongAxis] == std::round(crossing[alongAxis]))
+        continue;
+      const int32_t taker = leafAcross(tree, crossing, vertical, -leafSideOf(side));
+      if (taker >= 0 && holdsOnlyEdge(tree[taker], edge) && tree[taker].level == tree.uniformDepth) out.push_back(taker);
+    }
   }
 }
 

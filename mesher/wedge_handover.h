@@ -5,7 +5,8 @@
 // along the line, M' the edge's point straight across from M) is handed to the leaf across the
 // line at Q, whose inside there is the obtuse side. The taker's ring drops Q and runs
 // M -> M' instead (corner 90 - theta), the giver's drops Q for M' (corners 90 and 90 + theta).
-// Both leaves decide from the same data, so they always agree.
+// Where the edge ends at the giver's vertex V before M', the triangle is (Q, M, V): the taker
+// runs M -> V, the giver V -> M. Both leaves decide from the same data, so they always agree.
 #pragma once
 
 #include "mesher/quadtree.h"
@@ -18,13 +19,14 @@ namespace mesher {
 struct WedgeHandover {
   int32_t giver = -1, taker = -1;
   Vec2 m{0}, mPrime{0};  // tree coordinates; M' is computed as leaf regions compute crossings
+  int32_t vertex = -1;   // the giver's vertex when the triangle ends there (mPrime is then V)
 };
 
 // The handover at crossing `q` of edge `edge` with side `side` (0 west, 1 east, 2 south,
 // 3 north) of leaf `leaf`, whose ring runs from q along that side to the grid point `m`; nothing
-// when the crossing is not shallow or the wedge cannot be handed over whole: both leaves must
-// hold that edge alone (no vertex), and the taker must be finer than the uniform depth, so its
-// grown region stays within a coarsest leaf's extent (the patch size).
+// when the crossing is not shallow or the wedge cannot be handed over whole: the taker must hold
+// that edge alone and be finer than the uniform depth, so its grown region stays within a
+// coarsest leaf's extent (the patch size); the giver must hold it alone or with its vertex.
 std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTree, int32_t leaf, uint32_t edge,
                                            int side, Vec2 q, Vec2 m);
 
