@@ -21,7 +21,7 @@ bool nearASide(const Quadtree& tree, int32_t q) {
 }
 
 // How many levels below its leaf a vertex may be taken.
-constexpr int kDeeper = 2;
+constexpr int kDeeper = 3;
 
 }  // namespace
 

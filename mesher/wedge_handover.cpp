@@ -37,8 +37,8 @@ std::optional<WedgeSide> shallowWedge(Vec2 a, Vec2 b, bool vertical, Vec2 planeP
 // Which side of its own line a leaf lies on: +1 when the line is its west or south side.
 int leafSideOf(int side) { return side == 0 || side == 2 ? 1 : -1; }
 
-bool holdsOnlyEdge(const Quadrant& leaf, uint32_t edge) {
-  return leaf.isLeaf() && leaf.vertex < 0 && leaf.edgeCount == 1 && leaf.edges[0] == edge;
+bool holdsEdge(const Quadrant& leaf, uint32_t edge) {
+  return leaf.isLeaf() && std::find(leaf.edges.begin(), leaf.edges.begin() + leaf.edgeCount, edge) != leaf.edges.begin() + leaf.edgeCount;
 }
 
 // The leaf across the line through q (q strictly between grid points), towards +1 or -1.
@@ -111,8 +111,7 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
   handover.taker = leafGives ? other : leaf;
   const Quadrant& giver = tree[handover.giver];
   const Quadrant& taker = tree[handover.taker];
-  if (!holdsOnlyEdge(taker, edge) || taker.level <= tree.uniformDepth) return {};
-  if (giver.vertex < 0 && !holdsOnlyEdge(giver, edge)) return {};
+  if (!holdsEdge(taker, edge) || !holdsEdge(giver, edge) || taker.level <= tree.uniformDepth) return {};
   handover.m = m;
   // A vertex leaf holds only edges ending at its vertex: the wedge ends there when the vertex
   // comes before M' does, and the triangle handed over is (Q, M, V).
@@ -181,7 +180,7 @@ void coarseTakers(const Quadtree& tree, Vec2 planePerTree, int32_t q, std::vecto
           crossing[alongAxis] == std::round(crossing[alongAxis]))
         continue;
       const int32_t taker = leafAcross(tree, crossing, vertical, -leafSideOf(side));
-      if (taker >= 0 && holdsOnlyEdge(tree[taker], edge) && tree[taker].level == tree.uniformDepth) out.push_back(taker);
+      if (taker >= 0 && holdsEdge(tree[taker], edge) && tree[taker].level == tree.uniformDepth) out.push_back(taker);
     }
   }
 }

@@ -24,9 +24,9 @@ struct WedgeHandover {
 
 // The handover at crossing `q` of edge `edge` with side `side` (0 west, 1 east, 2 south,
 // 3 north) of leaf `leaf`, whose ring runs from q along that side to the grid point `m`; nothing
-// when the crossing is not shallow or the wedge cannot be handed over whole: the taker must hold
-// that edge alone and be finer than the uniform depth, so its grown region stays within a
-// coarsest leaf's extent (the patch size); the giver must hold it alone or with its vertex.
+// when the crossing is not shallow or the wedge cannot be handed over whole: the taker must be
+// finer than the uniform depth, so its grown region stays within a coarsest leaf's extent (the
+// patch size).
 std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTree, int32_t leaf, uint32_t edge,
                                            int side, Vec2 q, Vec2 m);
 
