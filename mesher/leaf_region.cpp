@@ -264,7 +264,9 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
   for (size_t k = 0; k < 2; ++k) {
     const PathCrossing& c = crossings[k];
     if (c.side < 0 || neighbour[k] < path || neighbour[k] >= n || ring[at[k]].inputVertex >= 0) continue;
-    handovers[k] = wedgeHandover(tree_, frame_.planePerTree(), q, c.edge, c.side, ring[at[k]].at, ring[neighbour[k]].at);
+    int32_t tooCoarse = -1;
+    handovers[k] = wedgeHandover(tree_, frame_.planePerTree(), q, c.edge, c.side, ring[at[k]].at, ring[neighbour[k]].at, &tooCoarse);
+    if (tooCoarse >= 0 && coarseTakers_) coarseTakers_->push_back(tooCoarse);
   }
   if (!handovers[0] && !handovers[1]) return;
   std::vector<RegionPoint>& out = handed_;

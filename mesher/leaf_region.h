@@ -44,6 +44,9 @@ class LeafRegionBuilder {
   explicit LeafRegionBuilder(const PolygonTree& built) : tree_(built.tree), frame_(built.frame) {}
   // `adjacent`, when given, is tree.adjacent(q, side) for West, East, South, North.
   const LeafRegion& build(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
+  // While set, build() appends to `takers` the leaves that would take a shallow wedge from the
+  // leaf built if they were one level finer (wedge_handover.h).
+  void collectCoarseTakers(std::vector<int32_t>* takers) { coarseTakers_ = takers; }
 
  private:
   // Where the polygon's boundary enters (or leaves) the leaf: the edge and the side (0 west,
@@ -60,6 +63,7 @@ class LeafRegionBuilder {
   LeafRegion region_;
   std::vector<RegionPoint> onBorder_, path_, ring_, handed_;
   std::vector<Vec2> between_;
+  std::vector<int32_t>* coarseTakers_ = nullptr;
   std::vector<int32_t> across_;
   std::vector<std::pair<double, RegionPoint>> walk_;
   Ring2 at_;

@@ -23,6 +23,9 @@ bool nearASide(const Quadtree& tree, int32_t q) {
 // How many levels below its leaf a vertex may be taken.
 constexpr int kDeeper = 3;
 
+// Rounds of splitting leaves too coarse to take a wedge (each round's balancing can make more).
+constexpr int kTakerRounds = 4;
+
 }  // namespace
 
 bool QualityRefiner::reachesBound(int32_t q) {
@@ -63,22 +66,29 @@ size_t QualityRefiner::refine() {
     }
     ++splits;
   }
-  // Leaves of the coarsest size that would take a shallow wedge are split first: grown by it,
-  // their elements would be longer than the patch size.
-  takers_.clear();
-  if (hasShallowEdge(tree.input, built_.frame.planePerTree())) {
+  if (!seeds_.empty()) balanceAround(tree, seeds_);
+  // Leaves that would take a shallow wedge but are too coarse to (grown by it, their elements
+  // would be longer than the patch size, or meet much finer ones) are split, round by round as
+  // splits and their balancing make new ones.
+  if (!hasShallowEdge(tree.input, built_.frame.planePerTree())) return splits;
+  for (int round = 0; round < kTakerRounds; ++round) {
+    takers_.clear();
+    regions_.collectCoarseTakers(&takers_);
     tree.leaves(leaves_);
     for (int32_t q : leaves_)
-      if (tree[q].status == QuadStatus::Boundary) coarseTakers(tree, built_.frame.planePerTree(), q, takers_);
+      if (tree[q].status == QuadStatus::Boundary) regions_.build(q);
+    regions_.collectCoarseTakers(nullptr);
+    std::sort(takers_.begin(), takers_.end());
+    takers_.erase(std::unique(takers_.begin(), takers_.end()), takers_.end());
+    seeds_.clear();
+    for (int32_t q : takers_) {
+      if (!tree[q].isLeaf() || !tree.splitLeaf(q)) continue;
+      tree.leavesBelow(q, seeds_);
+      ++splits;
+    }
+    if (seeds_.empty()) break;
+    balanceAround(tree, seeds_);
   }
-  std::sort(takers_.begin(), takers_.end());
-  takers_.erase(std::unique(takers_.begin(), takers_.end()), takers_.end());
-  for (int32_t q : takers_) {
-    if (!tree[q].isLeaf() || !tree.splitLeaf(q)) continue;
-    tree.leavesBelow(q, seeds_);
-    ++splits;
-  }
-  if (!seeds_.empty()) balanceAround(tree, seeds_);
   return splits;
 }
 

@@ -95,7 +95,7 @@ Vec2 crossingOnLine(Vec2 a, Vec2 b, bool vertical, double line, double lo, doubl
 }
 
 std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTree, int32_t leaf, uint32_t edge,
-                                           int side, Vec2 q, Vec2 m) {
+                                           int side, Vec2 q, Vec2 m, int32_t* tooCoarse) {
   const bool vertical = side < 2;
   const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
   // A crossing on a grid point (snapped there) touches more leaves than two.
@@ -111,7 +111,12 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
   handover.taker = leafGives ? other : leaf;
   const Quadrant& giver = tree[handover.giver];
   const Quadrant& taker = tree[handover.taker];
-  if (!holdsEdge(taker, edge) || !holdsEdge(giver, edge) || taker.level <= tree.uniformDepth) return {};
+  if (!holdsEdge(taker, edge) || !holdsEdge(giver, edge)) return {};
+  auto refuseCoarse = [&]() -> std::optional<WedgeHandover> {
+    if (tooCoarse) *tooCoarse = handover.taker;
+    return {};
+  };
+  if (taker.level <= tree.uniformDepth) return refuseCoarse();
   handover.m = m;
   // A vertex leaf holds only edges ending at its vertex: the wedge ends there when the vertex
   // comes before M' does, and the triangle handed over is (Q, M, V).
@@ -136,7 +141,7 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
   bool graded = true;
   forEachPointBetween(tree, handover,
                       [&](const Quadrant& across, const std::vector<Vec2>&) { graded = graded && across.level <= taker.level + 1; });
-  if (!graded) return {};
+  if (!graded) return refuseCoarse();
   return handover;
 }
 
@@ -158,31 +163,6 @@ bool hasShallowEdge(const QuadtreeInput& input, Vec2 planePerTree) {
     if (shallowWedge(a, b, true, planePerTree) || shallowWedge(a, b, false, planePerTree)) return true;
   }
   return false;
-}
-
-void coarseTakers(const Quadtree& tree, Vec2 planePerTree, int32_t q, std::vector<int32_t>& out) {
-  const Quadrant& leaf = tree[q];
-  const double s = static_cast<double>(tree.edgeLength(leaf));
-  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y);
-  for (uint8_t k = 0; k < leaf.edgeCount; ++k) {
-    const uint32_t edge = leaf.edges[k];
-    const Vec2 a = tree.input.vertices[tree.input.edges[edge][0]], b = tree.input.vertices[tree.input.edges[edge][1]];
-    for (int side = 0; side < 4; ++side) {
-      const bool vertical = side < 2;
-      const std::optional<WedgeSide> wedge = shallowWedge(a, b, vertical, planePerTree);
-      if (!wedge || wedge->side != leafSideOf(side)) continue;
-      const double line = side == 0 ? x0 : side == 1 ? x0 + s : side == 2 ? y0 : y0 + s;
-      const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
-      if ((a[acrossAxis] - line) * (b[acrossAxis] - line) >= 0) continue;  // the edge does not cross the line
-      const double start = alongAxis == 0 ? x0 : y0;
-      const Vec2 crossing = crossingOnLine(a, b, vertical, line, start, start + s, tree.gridSnap);
-      if (crossing[alongAxis] <= start || crossing[alongAxis] >= start + s ||
-          crossing[alongAxis] == std::round(crossing[alongAxis]))
-        continue;
-      const int32_t taker = leafAcross(tree, crossing, vertical, -leafSideOf(side));
-      if (taker >= 0 && holdsEdge(tree[taker], edge) && tree[taker].level == tree.uniformDepth) out.push_back(taker);
-    }
-  }
 }
 
 }  // namespace mesher

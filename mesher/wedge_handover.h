@@ -24,11 +24,12 @@ struct WedgeHandover {
 
 // The handover at crossing `q` of edge `edge` with side `side` (0 west, 1 east, 2 south,
 // 3 north) of leaf `leaf`, whose ring runs from q along that side to the grid point `m`; nothing
-// when the crossing is not shallow or the wedge cannot be handed over whole: the taker must be
-// finer than the uniform depth, so its grown region stays within a coarsest leaf's extent (the
-// patch size).
+// when the crossing is not shallow or the wedge cannot be handed over whole. The taker must be
+// finer than the uniform depth (its grown region then stays within a coarsest leaf, the patch
+// size) and at most one level coarser than the leaves it meets across the giver's side; when it
+// is too coarse only for that, `tooCoarse` (if given) is set to it: split, it would do.
 std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTree, int32_t leaf, uint32_t edge,
-                                           int side, Vec2 q, Vec2 m);
+                                           int side, Vec2 q, Vec2 m, int32_t* tooCoarse = nullptr);
 
 // The mesh vertices strictly between M and M' (the T-vertices of the giver's finer neighbours
 // when M -> M' runs along the giver's side), ordered from M to M', appended to `out`.
@@ -37,10 +38,6 @@ void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vec
 // Whether some edge meets the grid lines of one axis or the other shallowly (most surfaces are
 // rectangles along the axes: they need no look at their leaves).
 bool hasShallowEdge(const QuadtreeInput& input, Vec2 planePerTree);
-
-// The leaves of a coarsest size (the uniform depth) that would take a shallow wedge from leaf q
-// but are too coarse to, appended to `out`: splitting them lets the wedge be handed over.
-void coarseTakers(const Quadtree& tree, Vec2 planePerTree, int32_t q, std::vector<int32_t>& out);
 
 // The point where edge a -> b meets the grid line x = line (`vertical`) or y = line, from the
 // edge and the line alone (so every leaf computes it bit for bit alike), clamped to [lo, hi]
