@@ -2,6 +2,7 @@
 
 #include "mesher/classify.h"
 #include "mesher/quality_refinement.h"
+#include "mesher/wedge_handover.h"
 
 #include <glm/common.hpp>
 
@@ -28,6 +29,8 @@ bool inTree(const Quadtree& tree, int32_t q) {
 
 AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
     : built_(buildMeshTree(polygon, settings.patchSize)) {
+  std::vector<uint8_t> shallow;
+  handsOver_ = shallowEdges(built_.tree.input, built_.frame.planePerTree(), shallow);
   const std::vector<int32_t> leaves = built_.tree.leaves();
   emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
   MeshDelta ignored;
@@ -123,12 +126,12 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
   for (int32_t q : fresh) emitLeaf(q, delta);
 
   // Neighbours whose border gained or lost a T-vertex are emitted again; the rest keep theirs.
-  // A leaf's ring also depends on leaves two steps away (a wedge handed over takes points from
-  // the giver's far side: wedge_handover.h), so neighbours of neighbours are looked at too.
+  // Where wedges may be handed over, a leaf's ring also depends on leaves two steps away (the
+  // points along the giver's far side: wedge_handover.h): neighbours of neighbours too.
   std::vector<int32_t> near;
   for (int32_t q : fresh)
     for (Side side : kSides) tree.neighbors(q, side, near);
-  const size_t firstStep = near.size();
+  const size_t firstStep = handsOver_ ? near.size() : 0;
   for (size_t i = 0; i < firstStep; ++i)
     for (Side side : kSides) tree.neighbors(near[i], side, near);
   std::sort(near.begin(), near.end());
@@ -302,6 +305,8 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
     if (!change.isMerge()) tree.leavesBelow(change.quadrant, seeds);
   balanceAround(tree, std::move(seeds));
   holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
+  std::vector<uint8_t> shallow;
+  handsOver_ = shallowEdges(tree.input, built_.frame.planePerTree(), shallow);
   return {static_cast<int>(holes_.size() - 1), applyChanges(firstNewVertex, around)};
 }
 

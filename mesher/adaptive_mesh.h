@@ -101,6 +101,7 @@ class AdaptiveMesh {
     bool active;
   };
   std::vector<InsertedHole> holes_;
+  bool handsOver_ = false;  // some edge meets grid lines shallowly (wedge_handover.h)
 };
 
 }  // namespace mesher

@@ -208,6 +208,14 @@ void Quadtree::leavesIn(Vec2 lo, Vec2 hi, std::vector<int32_t>& out) const {
   });
 }
 
+void Quadtree::leavesStoring(uint32_t e, std::vector<int32_t>& out) const {
+  descend(*this, 0, [&](int32_t q) { return crossedBy(q, e); }, [&](int32_t q) {
+    const Quadrant& leaf = (*this)[q];
+    if (std::find(leaf.edges.begin(), leaf.edges.begin() + leaf.edgeCount, e) != leaf.edges.begin() + leaf.edgeCount) out.push_back(q);
+    return Visit::Done;
+  });
+}
+
 void Quadtree::forgetEdge(uint32_t e) {
   descend(*this, 0, [&](int32_t q) { return crossedBy(q, e); }, [&](int32_t q) {
     Quadrant& quad = quadrants[static_cast<size_t>(q)];

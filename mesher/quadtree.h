@@ -113,6 +113,8 @@ class Quadtree {
   // Reverts the changes after the first `keep` (a split that ran out of depth part way).
   void undoChanges(size_t keep);
 
+  // The leaves storing edge e, appended to `out` (work in proportion to the leaves it crosses).
+  void leavesStoring(uint32_t e, std::vector<int32_t>& out) const;
   // The leaves whose closed square meets the box [lo, hi].
   void leavesIn(Vec2 lo, Vec2 hi, std::vector<int32_t>& out) const;
   // Takes edge e out of every leaf that stores it, and vertex v (when given) out of every leaf

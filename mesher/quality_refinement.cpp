@@ -70,13 +70,15 @@ size_t QualityRefiner::refine() {
   // Leaves that would take a shallow wedge but are too coarse to (grown by it, their elements
   // would be longer than the patch size, or meet much finer ones) are split, round by round as
   // splits and their balancing make new ones.
-  if (!hasShallowEdge(tree.input, built_.frame.planePerTree())) return splits;
+  if (!shallowEdges(tree.input, built_.frame.planePerTree(), shallow_)) return splits;
   for (int round = 0; round < kTakerRounds; ++round) {
+    // Givers and takers both store the shallow edge: the leaves along those edges.
+    leaves_.clear();
+    for (uint32_t e = 0; e < shallow_.size(); ++e)
+      if (shallow_[e]) tree.leavesStoring(e, leaves_);
     takers_.clear();
     regions_.collectCoarseTakers(&takers_);
-    tree.leaves(leaves_);
-    for (int32_t q : leaves_)
-      if (tree[q].status == QuadStatus::Boundary) regions_.build(q);
+    for (int32_t q : leaves_) regions_.build(q);
     regions_.collectCoarseTakers(nullptr);
     std::sort(takers_.begin(), takers_.end());
     takers_.erase(std::unique(takers_.begin(), takers_.end()), takers_.end());

@@ -156,13 +156,16 @@ void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vec
   out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
 }
 
-bool hasShallowEdge(const QuadtreeInput& input, Vec2 planePerTree) {
+bool shallowEdges(const QuadtreeInput& input, Vec2 planePerTree, std::vector<uint8_t>& shallow) {
+  shallow.assign(input.edges.size(), 0);
+  bool any = false;
   for (uint32_t e = 0; e < input.edges.size(); ++e) {
     if (!input.active(e)) continue;
     const Vec2 a = input.vertices[input.edges[e][0]], b = input.vertices[input.edges[e][1]];
-    if (shallowWedge(a, b, true, planePerTree) || shallowWedge(a, b, false, planePerTree)) return true;
+    shallow[e] = shallowWedge(a, b, true, planePerTree) || shallowWedge(a, b, false, planePerTree);
+    any = any || shallow[e];
   }
-  return false;
+  return any;
 }
 
 }  // namespace mesher

@@ -35,9 +35,10 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
 // when M -> M' runs along the giver's side), ordered from M to M', appended to `out`.
 void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vector<Vec2>& out);
 
-// Whether some edge meets the grid lines of one axis or the other shallowly (most surfaces are
-// rectangles along the axes: they need no look at their leaves).
-bool hasShallowEdge(const QuadtreeInput& input, Vec2 planePerTree);
+// Which edges meet the grid lines of one axis or the other shallowly (1 in `shallow`, per edge),
+// and whether any does (most surfaces are rectangles along the axes: none of their leaves needs
+// a look).
+bool shallowEdges(const QuadtreeInput& input, Vec2 planePerTree, std::vector<uint8_t>& shallow);
 
 // The point where edge a -> b meets the grid line x = line (`vertical`) or y = line, from the
 // edge and the line alone (so every leaf computes it bit for bit alike), clamped to [lo, hi]
