@@ -204,17 +204,31 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
 
   // Falling short, the ring may gain points on its stretch of the polygon's boundary (nothing
   // lies across it, so they make no T-vertex): the feet of the other ring points, so that a
-  // thin strip along an edge splits into pieces across it instead of slivers along it.
-  if (plain < 1 && boundaryPoints >= 2 && augment(n, boundaryPoints, inner, shapeScale)) {
+  // thin strip along an edge splits into pieces across it instead of slivers along it. Every
+  // foot first; failing that, each foot alone (another one can leave a sliver beside it).
+  if (plain < 1 && boundaryPoints >= 2) {
     kept_.swap(best_);
-    const size_t m = points_.size() - (inner ? 1 : 0);
-    int hinge = -1;
-    for (size_t i = 0; i < m && preferredHinge >= 0; ++i)
-      if (origin_[i] == preferredHinge) hinge = static_cast<int>(i);
-    const double augmented = search(m, hinge, inner != nullptr, shapeScale);
-    if (augmented >= 1 || augmented > plain + 0.05) {
-      score_ = augmented;
-      out.insert(out.end(), best_.begin(), best_.end());
+    double bestScore = plain;
+    const size_t feet = augment(ring, boundaryPoints, inner, shapeScale, -1);
+    for (int only = -1; only < static_cast<int>(feet > 1 ? feet : 0) && bestScore < 1; ++only) {
+      if (only >= 0) augment(ring, boundaryPoints, inner, shapeScale, only);
+      const size_t m = points_.size() - (inner ? 1 : 0);
+      int hinge = -1;
+      for (size_t i = 0; i < m && preferredHinge >= 0; ++i)
+        if (origin_[i] == preferredHinge) hinge = static_cast<int>(i);
+      const double augmented = feet > 0 ? search(m, hinge, inner != nullptr, shapeScale) : -1;
+      if (augmented >= 1 || augmented > bestScore + 0.05) {
+        bestScore = augmented;
+        augmentedBest_.swap(best_);
+        augmentedPoints_.assign(points_.begin(), points_.end());
+        augmentedOrigin_.assign(origin_.begin(), origin_.end());
+      }
+    }
+    if (bestScore > plain) {
+      score_ = bestScore;
+      points_.swap(augmentedPoints_);
+      origin_.swap(augmentedOrigin_);
+      out.insert(out.end(), augmentedBest_.begin(), augmentedBest_.end());
       return;
     }
     // Not better: back to the plain ring.
@@ -242,11 +256,12 @@ bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferred
   return score_ >= 1;
 }
 
-bool SubdomainRemover::augment(size_t n, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale) {
-  const std::vector<Vec2> ring(points_.begin(), points_.begin() + static_cast<std::ptrdiff_t>(n));
+size_t SubdomainRemover::augment(const std::vector<Vec2>& ring, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale,
+                                 int only) {
+  const size_t n = ring.size();
   points_.clear();
   origin_.clear();
-  bool added = false;
+  size_t found = 0;
   std::vector<double>& feet = feet_;
   for (size_t i = 0; i < n; ++i) {
     points_.push_back(ring[i]);
@@ -264,13 +279,15 @@ bool SubdomainRemover::augment(size_t n, size_t boundaryPoints, const Vec2* inne
     std::sort(feet.begin(), feet.end());
     feet.erase(std::unique(feet.begin(), feet.end(), [](double s, double t) { return t - s < 0.05; }), feet.end());
     for (double t : feet) {
-      points_.push_back(ring[i] + t * (ring[i + 1] - ring[i]));
-      origin_.push_back(-1);
-      added = true;
+      if (only < 0 || static_cast<size_t>(only) == found) {
+        points_.push_back(ring[i] + t * (ring[i + 1] - ring[i]));
+        origin_.push_back(-1);
+      }
+      ++found;
     }
   }
   if (inner) points_.push_back(*inner), origin_.push_back(-1);
-  return added;
+  return found;
 }
 
 }  // namespace mesher

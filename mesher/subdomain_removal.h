@@ -58,9 +58,9 @@ class SubdomainRemover {
   // The best fan of points_ (the first n a ring, then the inner point when `hasInner`) into
   // best_; returns its score.
   double search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale);
-  // Rebuilds points_ and origin_ with the feet of ring points on the ring's boundary stretch;
-  // false when there are none.
-  bool augment(size_t n, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale);
+  // Rebuilds points_ and origin_ as `ring` with the feet of its points on its boundary stretch
+  // (all of them, or only the one numbered `only`); returns how many feet there are.
+  size_t augment(const std::vector<Vec2>& ring, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale, int only);
   // How close trial_ comes to the bound: 1 or more when every angle reaches what it can.
   double score() const;
   // Whether trial_ reaches the bound at every corner (score() >= 1), without angles.
@@ -71,7 +71,9 @@ class SubdomainRemover {
   std::vector<uint32_t> run_;
   std::vector<int> origin_;
   std::vector<double> feet_;
-  std::vector<RingElement> trial_, best_, kept_, unused_;
+  std::vector<RingElement> trial_, best_, kept_, unused_, augmentedBest_;
+  std::vector<Vec2> augmentedPoints_;
+  std::vector<int> augmentedOrigin_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound
   bool firstGood_ = false;  // the search stops at the first fan that reaches the bound
 };
