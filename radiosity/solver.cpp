@@ -694,10 +694,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
       judgeReceivers(p, *frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
                      static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunks[c]);
   });
-  if (before)
-    ++stats.reusedShots;
-  else
-    keepShot(p, *frame);
+  stats.reusedShots += before != nullptr;
   double replacedPixels = 0;
   glm::dvec3 replacedNew{0};
   for (const ReceiverChunk& chunk : chunks) {
@@ -728,21 +725,35 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   }
   stats.renormalisedShots += renormalised;
   lastScale = {scale, newScale};
-  for (ReceiverChunk& chunk : chunks)
-    for (NewFactor& f : chunk.factors) f.front *= newScale, f.back *= newScale;
 
-  for (const pxpl5::IdFactor& f : factors) {
-    if (replaced[f.id]) continue;
-    const glm::dvec3 factor = f.factor * scale;
-    if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
-    else deposit(f.id, glm::dvec3(0), factor);
+  // Deposited, clearing the scratch marks on the way: one pass over each list (the new factors
+  // were written by other threads; each pass over them was a round of cache misses).
+  const auto depositAll = [&] {
+    for (const pxpl5::IdFactor& f : factors) {
+      pixelFactor[f.id] = 0;
+      if (replaced[f.id]) continue;
+      const glm::dvec3 factor = f.factor * scale;
+      if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
+      else deposit(f.id, glm::dvec3(0), factor);
+    }
+    for (const ReceiverChunk& chunk : chunks)
+      for (const NewFactor& f : chunk.factors) {
+        replaced[f.element] = 0;
+        deposit(f.element, f.front * newScale, f.back * newScale);
+      }
+  };
+  // A first shot is kept meanwhile, on another graphics processor when there is one: both only
+  // read the frame and the chunks, and they write apart. Keeping is task 0, which the calling
+  // thread takes at once: it is the longer (fresh pages to fill), so the deposit can wait the
+  // tens of microseconds a worker takes to wake.
+  if (before) {
+    depositAll();
+  } else {
+    renderer.runOnGraphicsProcessors(2, [&](size_t task, int) {
+      if (task == 0) keepShot(p, *frame);
+      else depositAll();
+    });
   }
-  for (const ReceiverChunk& chunk : chunks)
-    for (const NewFactor& f : chunk.factors) deposit(f.element, f.front, f.back);
-
-  for (const pxpl5::IdFactor& f : factors) pixelFactor[f.id] = 0;
-  for (const ReceiverChunk& chunk : chunks)
-    for (const NewFactor& f : chunk.factors) replaced[f.element] = 0;
   return sky * scale;
 }
 
