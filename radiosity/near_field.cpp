@@ -160,23 +160,27 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
     };
     light.sets = alike(1) && alike(2) ? 1 : 3;
   }
+  // Top down: breadth-first order puts every node after its parent.
+  if (!out.empty()) out[0].lit = out[0].weight != glm::dvec3(0);
+  for (size_t n = 0; n < tree.nodes.size(); ++n)
+    for (uint32_t c = tree.nodes[n].child; c < tree.nodes[n].child + tree.nodes[n].children; ++c)
+      out[c].lit = out[n].lit && out[c].weight != glm::dvec3(0);
 }
 
-void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
-                     std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
-                     double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back) {
+void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elements, std::span<const Receiver> receivers,
+                         const glm::dvec3& normal, const Receiver& r, double farRatio, double ratio, int splits,
+                         NearPlans& out) {
+  const size_t steps = out.steps.size(), factors = out.factors.size();
   // Heights over r's plane in the tree's coordinates: at the origin, and per unit along each axis.
   const double originHeight = glm::dot(r.normal, tree.origin) - r.offset;
   const glm::dvec3 slope{glm::dot(r.normal, tree.x), glm::dot(r.normal, tree.y), glm::dot(r.normal, tree.z)};
   const auto visit = [&](const auto& self, uint32_t n) -> void {
-    const NodeLight& l = light[n];
-    if (l.weight == glm::dvec3(0)) return;  // nothing to shoot there (under a solid, say)
     const PatchTree::Node& node = tree.nodes[n];
     if (node.children == 0) {
       double f = 0, b = 0;
       areaToPolygon(receivers[elements[node.first]], 1.0, normal, r, farRatio, ratio, splits, f, b);
-      front += l.weight * f;
-      back += l.weight * b;
+      out.steps.push_back({n, NearStep::kElement});
+      out.factors.emplace_back(f, b);
       return;
     }
     // A node that r's plane cuts sees r's front from one part and its back from the other: the
@@ -192,16 +196,43 @@ void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, st
       for (uint32_t c = node.child; c < node.child + node.children; ++c) self(self, c);
       return;
     }
+    out.steps.push_back({n, far ? NearStep::kMean : NearStep::kPoints});
+  };
+  visit(visit, 0);
+  out.sizes.push_back({static_cast<uint32_t>(out.steps.size() - steps), static_cast<uint32_t>(out.factors.size() - factors)});
+}
+
+void applyPlan(std::span<const NodeLight> light, std::span<const NearStep> steps,
+               std::span<const glm::dvec2> factors, const glm::dvec3& normal, const Receiver& r, glm::dvec3& front,
+               glm::dvec3& back) {
+  const glm::dvec2* factor = factors.data();
+  for (const NearStep& step : steps) {
+    const NodeLight& l = light[step.node];
+    // A kElement step's factors are passed over also where there is nothing to shoot (under a
+    // solid, say).
+    if (step.kind == NearStep::kElement) {
+      const glm::dvec2 f = *factor++;
+      if (l.lit) front += l.weight * f.x, back += l.weight * f.y;
+      continue;
+    }
+    if (!l.lit) continue;
     for (int set = 0; set < l.sets; ++set) {
       glm::dvec3 weight = l.weight;
       if (l.sets > 1) weight = glm::dvec3(0), weight[set] = l.weight[set];
       if (weight == glm::dvec3(0)) continue;
-      if (far) addPoint(l.mean[set], weight, normal, r, front, back);
+      if (step.kind == NearStep::kMean) addPoint(l.mean[set], weight, normal, r, front, back);
       else
         for (const glm::dvec3& p : l.points[set]) addPoint(p, 0.25 * weight, normal, r, front, back);
     }
-  };
-  visit(visit, 0);
+  }
+}
+
+void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
+                     std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
+                     double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back) {
+  NearPlans plan;
+  planPatchToReceiver(tree, elements, receivers, normal, r, farRatio, ratio, splits, plan);
+  applyPlan(light, plan.steps, plan.factors, normal, r, front, back);
 }
 
 }  // namespace radiosity

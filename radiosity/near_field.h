@@ -52,6 +52,9 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
 // node (sets 3), else channel 0's serve all three (sets 1).
 struct NodeLight {
   glm::dvec3 weight{0};
+  // Neither this node nor any above it is without light: the integral skips a node of zero weight
+  // with everything under it.
+  bool lit = false;
   int sets = 1;
   std::array<glm::dvec3, 3> mean{};
   std::array<std::array<glm::dvec3, 4>, 3> points{};
@@ -72,5 +75,44 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
 void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
                      std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
                      double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back);
+
+// patchToReceiver in two halves, for a patch that shoots at the same receivers again and again
+// with its light spread differently each time. Which nodes count by their points and which
+// elements by their own integral depends on the geometry alone, and so do those integrals (most
+// of the work): they are the receiver's plan. The light only weighs the integrals and places the
+// points. planPatchToReceiver then applyPlan gives patchToReceiver's sums bit for bit, whatever
+// the light.
+struct NearStep {
+  enum Kind : uint32_t { kElement, kMean, kPoints };
+  uint32_t node = 0;
+  Kind kind = kElement;
+};
+// The size of one receiver's plan: its steps in traversal order and, per kElement step in order,
+// the leaf element's form factor to the receiver (unweighted): front and back.
+struct NearPlanSize {
+  uint32_t steps = 0, factors = 0;
+};
+// Plans of receivers one after another, and a run of them.
+struct NearPlans {
+  std::vector<NearStep> steps;
+  std::vector<glm::dvec2> factors;
+  std::vector<NearPlanSize> sizes;
+};
+struct NearPlansView {
+  std::span<const NearStep> steps;
+  std::span<const glm::dvec2> factors;
+  std::span<const NearPlanSize> sizes;
+};
+
+// Appends r's plan to `out`, the arguments as patchToReceiver's.
+void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elements, std::span<const Receiver> receivers,
+                         const glm::dvec3& normal, const Receiver& r, double farRatio, double ratio, int splits,
+                         NearPlans& out);
+
+// Adds to front/back (per channel) r's plan (`steps`, and `factors` of its kElement steps) made
+// with planPatchToReceiver, weighted by `light`; `normal` is the patch's.
+void applyPlan(std::span<const NodeLight> light, std::span<const NearStep> steps,
+               std::span<const glm::dvec2> factors, const glm::dvec3& normal, const Receiver& r, glm::dvec3& front,
+               glm::dvec3& back);
 
 }  // namespace radiosity

@@ -79,10 +79,11 @@ struct SolverSettings {
   bool windowedCorrections = true;
   // A patch shoots from the same point over the same geometry every time, so its first shot's
   // frame (pixel factors) and the judgement of its near and small receivers (visibilities,
-  // analytic factors) are kept and reused when it shoots again; only the near receivers'
-  // integrals, which weigh its elements by their unshot light, are done again. Results are the
-  // same bit for bit. Kept for the patches that shoot first until this many bytes are held;
-  // 0 keeps none.
+  // analytic factors, the plans of the near receivers' integrals with their elements' factors)
+  // are kept and reused when it shoots again; only the weighing of the near receivers' integrals
+  // by its elements' unshot light, and the factors from the points that stand for clusters of
+  // them, are done again. Results are the same bit for bit. Kept for the patches that shoot first
+  // until this many bytes are held; 0 keeps none.
   size_t shotCacheBytes = size_t{256} << 20;
 };
 

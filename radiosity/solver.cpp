@@ -131,13 +131,16 @@ struct Solver::State {
     glm::dvec3 front, back;  // per channel
   };
   // What judging a near or small receiver found that does not depend on the light: a small one's
-  // factor, a near one's visibility from the centre (its integral weighs the shooter's elements
-  // by their unshot light, so it is done in every shot).
+  // factor, a near one's visibility from the centre. A near one that is seen, or whose front the
+  // centre cannot tell about, gets its factor by an integral over the shooter, planned once
+  // (near_field.h) and weighed by the light in every shot: the plans are kept beside the judged
+  // receivers, one per such receiver, in their order.
   struct Judged {
     enum Kind : uint32_t { kSmallFront, kNear, kNearBehind };
     uint32_t element;
     Kind kind;
     double value;
+    bool integrated() const { return kind == kNearBehind || (kind == kNear && value > 0); }
   };
   std::vector<glm::dvec3> shares;
   std::vector<NodeLight> nodeLight;
@@ -149,6 +152,7 @@ struct Solver::State {
   static constexpr size_t kReceiverChunks = 256;
   struct ReceiverChunk {
     std::vector<Judged> judged;
+    NearPlans plans;
     std::vector<NewFactor> factors;
     double replacedPixels = 0;
     glm::dvec3 replacedNew{0};
@@ -157,17 +161,32 @@ struct Solver::State {
   std::array<ReceiverChunk, kReceiverChunks> chunks;
   std::array<std::vector<NewFactor>, kReceiverChunks> listed;  // listedFactors' per chunk
 
-  // Per patch, its first shot's pixel factors and judged receivers, chunk by chunk
+  // Per patch, its first shot's pixel factors, judged receivers and their plans, chunk by chunk
   // (SolverSettings::shotCacheBytes); none kept while chunkStart is empty.
   struct KeptShot {
     std::vector<pxpl5::IdFactor> factors;
     double total = 0;
     std::vector<Judged> judged;
-    std::vector<uint32_t> chunkStart;  // kReceiverChunks + 1 offsets into `judged`
-    static size_t bytesFor(size_t factors, size_t judged) {
-      return factors * sizeof(pxpl5::IdFactor) + judged * sizeof(Judged) + (kReceiverChunks + 1) * sizeof(uint32_t);
+    NearPlans plans;
+    struct ChunkStart {
+      uint32_t judged = 0, plans = 0, steps = 0, factors = 0;
+    };
+    std::vector<ChunkStart> chunkStart;  // kReceiverChunks + 1 offsets into `judged` and `plans`
+    static size_t bytesFor(size_t factors, const ChunkStart& end) {
+      return factors * sizeof(pxpl5::IdFactor) + end.judged * sizeof(Judged) + end.plans * sizeof(NearPlanSize) +
+             end.steps * sizeof(NearStep) + end.factors * sizeof(glm::dvec2) + (kReceiverChunks + 1) * sizeof(ChunkStart);
     }
-    size_t bytes() const { return chunkStart.empty() ? 0 : bytesFor(factors.size(), judged.size()); }
+    size_t bytes() const { return chunkStart.empty() ? 0 : bytesFor(factors.size(), chunkStart.back()); }
+    // Chunk c's judged receivers and their plans.
+    std::span<const Judged> judgedOf(size_t c) const {
+      return std::span(judged).subspan(chunkStart[c].judged, chunkStart[c + 1].judged - chunkStart[c].judged);
+    }
+    NearPlansView plansOf(size_t c) const {
+      const ChunkStart &from = chunkStart[c], &to = chunkStart[c + 1];
+      return {std::span(plans.steps).subspan(from.steps, to.steps - from.steps),
+              std::span(plans.factors).subspan(from.factors, to.factors - from.factors),
+              std::span(plans.sizes).subspan(from.plans, to.plans - from.plans)};
+    }
   };
   std::vector<KeptShot> keptShots;
   size_t keptBytes = 0;
@@ -186,10 +205,11 @@ struct Solver::State {
   // frame (see shoot).
   void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
                       uint32_t end, ReceiverChunk& out);
-  // The same from receivers judged before (a kept shot's chunk).
-  void rejudgeReceivers(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out);
-  // Judged receivers' factors into out.factors and out.replacedNew.
-  void integrateJudged(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out);
+  // The same from receivers judged before and their plans (a kept shot's chunk).
+  void rejudgeReceivers(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans, ReceiverChunk& out);
+  // Judged receivers' factors into out.factors and out.replacedNew, the near ones' integrals by
+  // their plans in p's light (nodeLight).
+  void integrateJudged(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans, ReceiverChunk& out);
   // Patch p's kept shot, or null.
   const KeptShot* keptShot(uint32_t p) const {
     return p < keptShots.size() && pointChosen[p] && !keptShots[p].chunkStart.empty() ? &keptShots[p] : nullptr;
@@ -437,6 +457,9 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
                                    uint32_t begin, uint32_t end, ReceiverChunk& out) {
   // Sums in locals, stored once: the chunks sit side by side and are judged on different threads.
   out.judged.clear();
+  out.plans.steps.clear();
+  out.plans.factors.clear();
+  out.plans.sizes.clear();
   double replacedPixels = 0;
   uint64_t nearCount = 0, smallCount = 0;
   const uint32_t si = patchSurface[p];
@@ -456,7 +479,10 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       // left the box's face 15% too dark.
       const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
       const bool behind = glm::dot(normal[j], eye) <= offset[j];
-      out.judged.push_back({j, behind ? Judged::kNearBehind : Judged::kNear, v});
+      const Judged& k = out.judged.emplace_back(j, behind ? Judged::kNearBehind : Judged::kNear, v);
+      if (k.integrated())
+        planPatchToReceiver(trees[p], elementsOf(p), receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
+                            settings.pieceRatio, settings.maxShooterSplits, out.plans);
       ++nearCount;
     } else {
       // A far receiver whose back faces the centre gets nothing but lost light whatever its
@@ -475,10 +501,11 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
   out.replacedPixels = replacedPixels;
   out.near = nearCount;
   out.small = smallCount;
-  integrateJudged(p, out.judged, out);
+  integrateJudged(p, out.judged, {out.plans.steps, out.plans.factors, out.plans.sizes}, out);
 }
 
-void Solver::State::rejudgeReceivers(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out) {
+void Solver::State::rejudgeReceivers(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans,
+                                     ReceiverChunk& out) {
   double replacedPixels = 0;
   uint64_t nearCount = 0;
   for (const Judged& k : judged) {
@@ -488,23 +515,27 @@ void Solver::State::rejudgeReceivers(uint32_t p, std::span<const Judged> judged,
   out.replacedPixels = replacedPixels;
   out.near = nearCount;
   out.small = judged.size() - nearCount;
-  integrateJudged(p, judged, out);
+  integrateJudged(p, judged, plans, out);
 }
 
-void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, ReceiverChunk& out) {
+void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans,
+                                    ReceiverChunk& out) {
   out.factors.clear();
   glm::dvec3 replacedNew{0};
-  const std::span<const uint32_t> own = elementsOf(p);
   const glm::dvec3& eyeNormal = surfaces[patchSurface[p]].normal;
+  size_t plan = 0, step = 0, factor = 0;
   for (const Judged& k : judged) {
     const uint32_t j = k.element;
     NewFactor f{j, glm::dvec3(0), glm::dvec3(0)};
     if (k.kind == Judged::kSmallFront) {
       f.front = glm::dvec3(k.value);
-    } else if (const bool behind = k.kind == Judged::kNearBehind; k.value > 0 || behind) {
-      patchToReceiver(trees[p], nodeLight, own, receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
-                      settings.pieceRatio, settings.maxShooterSplits, f.front, f.back);
-      if (!behind) f.front *= k.value;
+    } else if (k.integrated()) {
+      const NearPlanSize size = plans.sizes[plan++];
+      applyPlan(nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
+                receiver[j], f.front, f.back);
+      step += size.steps;
+      factor += size.factors;
+      if (k.kind != Judged::kNearBehind) f.front *= k.value;
       f.back *= k.value;
     }
     replaced[j] = 1;
@@ -517,18 +548,29 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
 void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame) {
   if (!pointChosen[p] || (p < keptShots.size() && !keptShots[p].chunkStart.empty())) return;
   // Sized before anything is copied: once the budget is spent most shots are not kept.
-  size_t judged = 0;
-  for (const ReceiverChunk& chunk : chunks) judged += chunk.judged.size();
-  const size_t bytes = KeptShot::bytesFor(frame.factors.size(), judged);
-  if (keptBytes + bytes > settings.shotCacheBytes) return;
   KeptShot record;
+  record.chunkStart.push_back({});
+  for (const ReceiverChunk& chunk : chunks) {
+    KeptShot::ChunkStart next = record.chunkStart.back();
+    next.judged += static_cast<uint32_t>(chunk.judged.size());
+    next.plans += static_cast<uint32_t>(chunk.plans.sizes.size());
+    next.steps += static_cast<uint32_t>(chunk.plans.steps.size());
+    next.factors += static_cast<uint32_t>(chunk.plans.factors.size());
+    record.chunkStart.push_back(next);
+  }
+  const KeptShot::ChunkStart& end = record.chunkStart.back();
+  if (keptBytes + KeptShot::bytesFor(frame.factors.size(), end) > settings.shotCacheBytes) return;
   record.factors.assign(frame.factors.begin(), frame.factors.end());
-  record.judged.reserve(judged);
   record.total = frame.total;
-  record.chunkStart.push_back(0);
+  record.judged.reserve(end.judged);
+  record.plans.sizes.reserve(end.plans);
+  record.plans.steps.reserve(end.steps);
+  record.plans.factors.reserve(end.factors);
   for (const ReceiverChunk& chunk : chunks) {
     record.judged.insert(record.judged.end(), chunk.judged.begin(), chunk.judged.end());
-    record.chunkStart.push_back(static_cast<uint32_t>(record.judged.size()));
+    record.plans.sizes.insert(record.plans.sizes.end(), chunk.plans.sizes.begin(), chunk.plans.sizes.end());
+    record.plans.steps.insert(record.plans.steps.end(), chunk.plans.steps.begin(), chunk.plans.steps.end());
+    record.plans.factors.insert(record.plans.factors.end(), chunk.plans.factors.begin(), chunk.plans.factors.end());
   }
   if (keptShots.size() <= p) keptShots.resize(unshot.size());
   keptBytes += record.bytes();
@@ -647,15 +689,12 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   const auto elements = static_cast<uint32_t>(receiver.size());
   renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
     if (before)
-      rejudgeReceivers(p, std::span(before->judged).subspan(before->chunkStart[c], before->chunkStart[c + 1] - before->chunkStart[c]), chunks[c]);
+      rejudgeReceivers(p, before->judgedOf(c), before->plansOf(c), chunks[c]);
     else
       judgeReceivers(p, *frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
                      static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunks[c]);
   });
-  if (before)
-    ++stats.reusedShots;
-  else
-    keepShot(p, *frame);
+  stats.reusedShots += before != nullptr;
   double replacedPixels = 0;
   glm::dvec3 replacedNew{0};
   for (const ReceiverChunk& chunk : chunks) {
@@ -686,21 +725,35 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   }
   stats.renormalisedShots += renormalised;
   lastScale = {scale, newScale};
-  for (ReceiverChunk& chunk : chunks)
-    for (NewFactor& f : chunk.factors) f.front *= newScale, f.back *= newScale;
 
-  for (const pxpl5::IdFactor& f : factors) {
-    if (replaced[f.id]) continue;
-    const glm::dvec3 factor = f.factor * scale;
-    if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
-    else deposit(f.id, glm::dvec3(0), factor);
+  // Deposited, clearing the scratch marks on the way: one pass over each list (the new factors
+  // were written by other threads; each pass over them was a round of cache misses).
+  const auto depositAll = [&] {
+    for (const pxpl5::IdFactor& f : factors) {
+      pixelFactor[f.id] = 0;
+      if (replaced[f.id]) continue;
+      const glm::dvec3 factor = f.factor * scale;
+      if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
+      else deposit(f.id, glm::dvec3(0), factor);
+    }
+    for (const ReceiverChunk& chunk : chunks)
+      for (const NewFactor& f : chunk.factors) {
+        replaced[f.element] = 0;
+        deposit(f.element, f.front * newScale, f.back * newScale);
+      }
+  };
+  // A first shot is kept meanwhile, on another graphics processor when there is one: both only
+  // read the frame and the chunks, and they write apart. Keeping is task 0, which the calling
+  // thread takes at once: it is the longer (fresh pages to fill), so the deposit can wait the
+  // tens of microseconds a worker takes to wake.
+  if (before) {
+    depositAll();
+  } else {
+    renderer.runOnGraphicsProcessors(2, [&](size_t task, int) {
+      if (task == 0) keepShot(p, *frame);
+      else depositAll();
+    });
   }
-  for (const ReceiverChunk& chunk : chunks)
-    for (const NewFactor& f : chunk.factors) deposit(f.element, f.front, f.back);
-
-  for (const pxpl5::IdFactor& f : factors) pixelFactor[f.id] = 0;
-  for (const ReceiverChunk& chunk : chunks)
-    for (const NewFactor& f : chunk.factors) replaced[f.element] = 0;
   return sky * scale;
 }
 

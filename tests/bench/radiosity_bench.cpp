@@ -41,6 +41,7 @@ void radiosityToOnePercent(benchmark::State& state) {
   state.counters["shots"] = static_cast<double>(stats.shots);
   state.counters["shots/s"] = static_cast<double>(stats.shots) / stats.seconds;
   state.counters["frames"] = static_cast<double>(stats.frames);
+  state.counters["reused"] = static_cast<double>(stats.reusedShots);
   state.counters["near/shot"] = static_cast<double>(stats.nearReceivers) / static_cast<double>(stats.shots);
   state.counters["small/shot"] = static_cast<double>(stats.smallReceivers) / static_cast<double>(stats.shots);
   state.counters["split"] = static_cast<double>(stats.splitPatches);
