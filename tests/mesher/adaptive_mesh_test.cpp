@@ -5,7 +5,6 @@
 #include "tests/mesher/mesh_expectations.h"
 #include "tests/mesher/random_polygons.h"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +14,8 @@
 
 namespace mesher {
 namespace {
+
+using test::elementNear;
 
 const PolygonWithHoles kWall{{{0, 0}, {240, 0}, {240, 96}, {0, 96}}, {{{30, 40}, {30, 80}, {66, 80}, {66, 40}}}};
 
@@ -32,20 +33,6 @@ std::set<std::vector<double>> shape(const AdaptiveMesh& mesh) {
     out.insert(corners);
   }
   return out;
-}
-
-ElementId elementNear(const AdaptiveMesh& mesh, Vec2 p) {
-  ElementId best;
-  double bestDistance = 1e300;
-  for (ElementId e : mesh.elements()) {
-    Vec2 center{0};
-    int n = 0;
-    for (uint32_t v : mesh.corners(e))
-      if (v != Mesh::kNone) center += mesh.vertices()[v], ++n;
-    const double d = glm::length(center / static_cast<double>(n) - p);
-    if (d < bestDistance) bestDistance = d, best = e;
-  }
-  return best;
 }
 
 TEST(AdaptiveMesh, StartsAsTheWholeMesh) {

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <set>
 #include <string>
 
 namespace mesher {
@@ -121,17 +120,7 @@ TEST(WedgeHandover, AdaptiveMeshesHandOverAlike) {
     std::mt19937 random(static_cast<unsigned>(degrees * 10));
     std::uniform_real_distribution<double> near(150, 350);
     for (int step = 0; step < 30; ++step) {
-      const Vec2 p{near(random), near(random)};
-      ElementId closest;
-      double best = 1e300;
-      for (ElementId e : adaptive.elements()) {
-        Vec2 centre{0};
-        int n = 0;
-        for (uint32_t v : adaptive.corners(e))
-          if (v != Mesh::kNone) centre += adaptive.vertices()[v], ++n;
-        const Vec2 d = centre / static_cast<double>(n) - p;
-        if (d.x * d.x + d.y * d.y < best) best = d.x * d.x + d.y * d.y, closest = e;
-      }
+      const ElementId closest = test::elementNear(adaptive, {near(random), near(random)});
       if (step % 3 == 2) adaptive.coarsen(closest);
       else adaptive.refine(closest);
       test::expectValidMesh(checkMesh(floor, adaptive.snapshot()));
