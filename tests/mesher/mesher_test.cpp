@@ -32,12 +32,14 @@ void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize, Quality* 
   if (quality) quality->elements += mesh.elements.size(), quality->belowAngleBound += c.belowAngleBound;
 }
 
-// What is left below the angle bound in random polygons: wedges where an edge crosses a grid line
-// at less than 18.4 degrees (no split changes that angle: the grid must bend onto the edge, as
-// Bern, Eppstein and Gilbert warp it), corner triangles such an edge cuts off, and vertices too
-// close to a grid line for a few splits to help. Measured 1.9% (convex with holes) and 1.8%
-// (concave) of the elements; 3.3% and 2.6% before vertex leaves were split for quality.
-constexpr double kBelowBoundShare = 0.02;
+// What is left below the angle bound in random polygons: vertices too close to a grid line for
+// a few splits to help, and thin strips between an edge and a grid line it nearly follows (a
+// short stretch of grid side beside a long one, which no element of the leaf can span well).
+// Wedges where an edge crosses a grid line at under 18.4 degrees are handed across the line
+// (wedge_handover_test.cpp). Measured 0.59% (convex with holes) and 0.42% (concave) of the
+// elements; 1.9% and 1.8% before wedges were handed over, 3.3% and 2.6% before vertex leaves
+// were split for quality.
+constexpr double kBelowBoundShare = 0.01;
 
 TEST(Mesher, ARectangleBecomesQuads) {
   const PolygonWithHoles rectangle{{{3, 2}, {35, 2}, {35, 14}, {3, 14}}, {}};
