@@ -29,8 +29,7 @@ bool inTree(const Quadtree& tree, int32_t q) {
 
 AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
     : built_(buildMeshTree(polygon, settings.patchSize)) {
-  std::vector<uint8_t> shallow;
-  handsOver_ = shallowEdges(built_.tree.input, built_.frame.planePerTree(), shallow);
+  handsOver_ = std::find(built_.tree.input.shallow.begin(), built_.tree.input.shallow.end(), 1) != built_.tree.input.shallow.end();
   const std::vector<int32_t> leaves = built_.tree.leaves();
   emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
   MeshDelta ignored;
@@ -274,6 +273,7 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
     in.edgeInto.push_back(firstEdge + (i + count - 1) % count);
   }
   in.removed.resize(in.edges.size(), 0);
+  handsOver_ = markShallowEdges(in, built_.frame.planePerTree());
   const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
   emitter_->addInputVertices(firstVertex, plane);
 
@@ -305,8 +305,6 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
     if (!change.isMerge()) tree.leavesBelow(change.quadrant, seeds);
   balanceAround(tree, std::move(seeds));
   holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
-  std::vector<uint8_t> shallow;
-  handsOver_ = shallowEdges(tree.input, built_.frame.planePerTree(), shallow);
   return {static_cast<int>(holes_.size() - 1), applyChanges(firstNewVertex, around)};
 }
 

@@ -226,11 +226,13 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
   bool added;
   for (const RegionPoint& p : region.ring) {
     uint32_t id = Mesh::kNone;
-    const bool onBorder = (p.at.x == x0 || p.at.x == x1) ? (p.at.y >= y0 && p.at.y <= y1)
-                                                          : (p.at.y == y0 || p.at.y == y1) && p.at.x >= x0 && p.at.x <= x1;
+    auto onBorder = [&] {
+      return (p.at.x == x0 || p.at.x == x1) ? (p.at.y >= y0 && p.at.y <= y1)
+                                            : (p.at.y == y0 || p.at.y == y1) && p.at.x >= x0 && p.at.x <= x1;
+    };
     if (p.inputVertex >= 0) {
       id = inputToMesh_[static_cast<size_t>(p.inputVertex)];
-    } else if (!inOrder_ || !onBorder) {
+    } else if (!inOrder_ || (region.handedOver && !onBorder())) {
       // Off the border only a handed-over wedge puts points (wedge_handover.h), which the
       // tree order does not foresee: they go in the table.
       id = ids_->findOrAdd(p.at, added);

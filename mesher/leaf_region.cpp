@@ -71,6 +71,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   region.hinge = -1;
   region.pathPoints = 0;
   region.templateKey = -1;
+  region.handedOver = false;
   region.westLeaves.clear();
   region.southLeaves.clear();
   const Quadrant& leaf = tree[q];
@@ -256,7 +257,9 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
   LeafRegion& region = region_;
   std::vector<RegionPoint>& ring = region.ring;
   const size_t n = ring.size(), path = region.pathPoints;
-  if (path < 2) return;
+  const std::vector<uint8_t>& shallow = tree_.input.shallow;
+  auto isShallow = [&](const PathCrossing& c) { return c.side >= 0 && c.edge < shallow.size() && shallow[c.edge]; };
+  if (path < 2 || (!isShallow(crossings[0]) && !isShallow(crossings[1]))) return;
   // The entry crossing is ring[0], its neighbour along the border the last point; the exit
   // crossing is ring[path - 1], its neighbour the next one.
   std::array<std::optional<WedgeHandover>, 2> handovers;
@@ -269,6 +272,7 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
     if (tooCoarse >= 0 && coarseTakers_) coarseTakers_->push_back(tooCoarse);
   }
   if (!handovers[0] && !handovers[1]) return;
+  region.handedOver = true;
   std::vector<RegionPoint>& out = handed_;
   out.clear();
   size_t pathKept = 0;

@@ -27,6 +27,9 @@ struct LeafRegion {
   // A point its elements may share inside the leaf: the centre of a whole square, else the
   // region's centroid. Only this leaf can use it, so it cannot make a T-vertex.
   Vec2 inner{0};
+  // Whether a shallow wedge was handed over to or from the leaf: only then can the ring hold
+  // points off the leaf's border.
+  bool handedOver = false;
   // The leaves across the west and south sides (any status), as Quadtree::neighbors lists them.
   std::vector<int32_t> westLeaves, southLeaves;
 };

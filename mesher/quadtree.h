@@ -40,6 +40,7 @@ struct QuadtreeInput {
   std::vector<std::array<uint32_t, 2>> edges;
   std::vector<uint32_t> edgeInto, edgeOutOf;    // per vertex
   std::vector<uint8_t> removed;                 // per edge: its hole has been taken out again
+  std::vector<uint8_t> shallow;                 // per edge: meets grid lines at under the angle bound (wedge_handover.h)
 
   bool active(uint32_t e) const { return e >= removed.size() || !removed[e]; }
 };

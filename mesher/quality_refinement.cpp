@@ -38,6 +38,7 @@ bool QualityRefiner::reachesBound(int32_t q) {
 
 size_t QualityRefiner::refine() {
   Quadtree& tree = built_.tree;
+  const bool shallowEdges = markShallowEdges(tree.input, built_.frame.planePerTree());
   size_t splits = 0;
   seeds_.clear();
   // The vertex leaves, in tree order: found from the vertices down in a tree large beside them,
@@ -70,12 +71,12 @@ size_t QualityRefiner::refine() {
   // Leaves that would take a shallow wedge but are too coarse to (grown by it, their elements
   // would be longer than the patch size, or meet much finer ones) are split, round by round as
   // splits and their balancing make new ones.
-  if (!shallowEdges(tree.input, built_.frame.planePerTree(), shallow_)) return splits;
+  if (!shallowEdges) return splits;
   for (int round = 0; round < kTakerRounds; ++round) {
     // Givers and takers both store the shallow edge: the leaves along those edges.
     leaves_.clear();
-    for (uint32_t e = 0; e < shallow_.size(); ++e)
-      if (shallow_[e]) tree.leavesStoring(e, leaves_);
+    for (uint32_t e = 0; e < tree.input.shallow.size(); ++e)
+      if (tree.input.shallow[e]) tree.leavesStoring(e, leaves_);
     takers_.clear();
     regions_.collectCoarseTakers(&takers_);
     for (int32_t q : leaves_) regions_.build(q);

@@ -31,7 +31,6 @@ class QualityRefiner {
   LeafRegionBuilder regions_;
   SubdomainRemover remover_;
   std::vector<int32_t> leaves_, seeds_, takers_;
-  std::vector<uint8_t> shallow_;  // per input edge
   std::vector<Vec2> ring_;
 };
 

@@ -19,8 +19,9 @@ struct WedgeSide {
 
 // The wedge at a crossing of edge a -> b (inside on its left) with a vertical (x = const) or
 // horizontal line, when the edge meets the line at less than the bound in the plane.
+const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
+
 std::optional<WedgeSide> shallowWedge(Vec2 a, Vec2 b, bool vertical, Vec2 planePerTree) {
-  static const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
   const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
   const Vec2 d = b - a, plane = d * planePerTree;
   if (!(std::abs(plane[acrossAxis]) < kTanBound * std::abs(plane[alongAxis])) || d[acrossAxis] == 0) return {};
@@ -84,25 +85,16 @@ void forEachPointBetween(const Quadtree& tree, const WedgeHandover& handover, Vi
 
 }  // namespace
 
-Vec2 crossingOnLine(Vec2 a, Vec2 b, bool vertical, double line, double lo, double hi, double snap) {
-  auto snapToGrid = [snap](double v) {
-    const double r = std::round(v);
-    return std::abs(v - r) <= snap ? r : v;
-  };
-  // Always interpolated from the edge's own start so both leaves of the line agree.
-  if (vertical) return {line, snapToGrid(std::clamp(a.y + (line - a.x) * (b.y - a.y) / (b.x - a.x), lo, hi))};
-  return {snapToGrid(std::clamp(a.x + (line - a.y) * (b.x - a.x) / (b.y - a.y), lo, hi)), line};
-}
-
 std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTree, int32_t leaf, uint32_t edge,
                                            int side, Vec2 q, Vec2 m, int32_t* tooCoarse) {
+  if (edge >= tree.input.shallow.size() || !tree.input.shallow[edge]) return {};
   const bool vertical = side < 2;
   const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
-  // A crossing on a grid point (snapped there) touches more leaves than two.
-  if (q[alongAxis] == std::round(q[alongAxis]) || m[acrossAxis] != q[acrossAxis]) return {};
   const Vec2 a = tree.input.vertices[tree.input.edges[edge][0]], b = tree.input.vertices[tree.input.edges[edge][1]];
   const std::optional<WedgeSide> wedge = shallowWedge(a, b, vertical, planePerTree);
-  if (!wedge || (m[alongAxis] - q[alongAxis]) * wedge->along <= 0) return {};
+  if (!wedge || m[acrossAxis] != q[acrossAxis] || (m[alongAxis] - q[alongAxis]) * wedge->along <= 0) return {};
+  // A crossing on a grid point (snapped there) touches more leaves than two.
+  if (q[alongAxis] == std::round(q[alongAxis])) return {};
   const int32_t other = leafAcross(tree, q, vertical, -leafSideOf(side));
   if (other < 0) return {};
   WedgeHandover handover;
@@ -156,14 +148,14 @@ void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vec
   out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
 }
 
-bool shallowEdges(const QuadtreeInput& input, Vec2 planePerTree, std::vector<uint8_t>& shallow) {
-  shallow.assign(input.edges.size(), 0);
+bool markShallowEdges(QuadtreeInput& input, Vec2 planePerTree) {
+  input.shallow.assign(input.edges.size(), 0);
   bool any = false;
   for (uint32_t e = 0; e < input.edges.size(); ++e) {
     if (!input.active(e)) continue;
     const Vec2 a = input.vertices[input.edges[e][0]], b = input.vertices[input.edges[e][1]];
-    shallow[e] = shallowWedge(a, b, true, planePerTree) || shallowWedge(a, b, false, planePerTree);
-    any = any || shallow[e];
+    input.shallow[e] = shallowWedge(a, b, true, planePerTree) || shallowWedge(a, b, false, planePerTree);
+    any = any || input.shallow[e];
   }
   return any;
 }

@@ -11,6 +11,8 @@
 
 #include "mesher/quadtree.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -35,14 +37,22 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
 // when M -> M' runs along the giver's side), ordered from M to M', appended to `out`.
 void pointsBetween(const Quadtree& tree, const WedgeHandover& handover, std::vector<Vec2>& out);
 
-// Which edges meet the grid lines of one axis or the other shallowly (1 in `shallow`, per edge),
-// and whether any does (most surfaces are rectangles along the axes: none of their leaves needs
-// a look).
-bool shallowEdges(const QuadtreeInput& input, Vec2 planePerTree, std::vector<uint8_t>& shallow);
+// Marks the edges that meet the grid lines of one axis or the other shallowly (input.shallow)
+// and says whether any does: most surfaces are rectangles along the axes, and none of their
+// leaves needs a look.
+bool markShallowEdges(QuadtreeInput& input, Vec2 planePerTree);
 
 // The point where edge a -> b meets the grid line x = line (`vertical`) or y = line, from the
 // edge and the line alone (so every leaf computes it bit for bit alike), clamped to [lo, hi]
-// and snapped onto a grid line within `snap`.
-Vec2 crossingOnLine(Vec2 a, Vec2 b, bool vertical, double line, double lo, double hi, double snap);
+// and snapped onto a grid line within `snap`. Inline: every boundary leaf computes two.
+inline Vec2 crossingOnLine(Vec2 a, Vec2 b, bool vertical, double line, double lo, double hi, double snap) {
+  auto snapToGrid = [snap](double v) {
+    const double r = std::round(v);
+    return std::abs(v - r) <= snap ? r : v;
+  };
+  // Always interpolated from the edge's own start so both leaves of the line agree.
+  if (vertical) return {line, snapToGrid(std::clamp(a.y + (line - a.x) * (b.y - a.y) / (b.x - a.x), lo, hi))};
+  return {snapToGrid(std::clamp(a.x + (line - a.y) * (b.x - a.x) / (b.y - a.y), lo, hi)), line};
+}
 
 }  // namespace mesher
