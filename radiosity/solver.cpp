@@ -736,18 +736,42 @@ struct Solver::Edit {
     uint32_t surface = 0;
   };
   std::vector<Cluster> clusters;  // per surface and geometry, a sphere around its changed elements
-  // Scratch of one correction in a window.
-  WindowCull cull;
-  std::vector<uint32_t> drawnNow, judged[2];
-  std::vector<uint32_t> marked;  // per element before: the correction that marked it for judging
-  uint32_t correction = 0;
-  std::vector<pxpl5::Polygon> soup;
-  std::vector<uint32_t> items[2];  // per pixel, the element seen (within the window)
-  std::vector<uint8_t> differs;    // per pixel of the changed window
-  pxpl5::HemisphereFrame frame[2];
-  std::vector<uint32_t> pixelCount, counted;  // per element now, its pixels in the grown window
-  double pixelShare = 0;                      // the factor of one disk pixel
+  // A correction in a window is found in two parts: what its window holds (frames before and
+  // now, the receivers judged again), which reads only geometry that no correction changes, and
+  // the deposits, which must come in turn. So the first part of the next pending correction is
+  // done beside this one's, on the other graphics processor: each Window has its own scratch and
+  // renderer (of one graphics processor, which runs on the thread that calls it). Their results
+  // are the same as one after the other.
+  struct Window {
+    explicit Window(int resolution);
+    pxpl5::HemisphereRenderer renderer;
+    double pixelShare = 0;  // the factor of one disk pixel
+    // What correctInWindow deposits along, for patch `patch` before, `now` now.
+    uint32_t patch = kNone, now = kNone;
+    bool windowable = false;
+    double centreBacks = 0;     // the share of backs its centre sees now (choosePoint's measure)
+    uint64_t frames = 0;        // hemisphere frames rendered for it
+    pxpl5::HemisphereFrame frame[2];
+    std::vector<uint32_t> judged[2];
+    // Scratch.
+    WindowCull cull;
+    std::vector<uint32_t> drawnNow;
+    std::vector<uint32_t> marked;  // per element before: the correction that marked it for judging
+    uint32_t correction = 0;
+    std::vector<pxpl5::Polygon> soup;
+    std::vector<uint32_t> items[2];  // per pixel, the element seen (within the window)
+    std::vector<uint8_t> differs;    // per pixel of the changed window
+    std::vector<uint32_t> pixelCount, counted;  // per element now, its pixels in the grown window
+  };
+  std::array<std::unique_ptr<Window>, 2> windows;  // made at the first correction in a window
+  bool nextPrepared = false;  // windows[1] holds the next pending correction's window
   std::vector<State::NewFactor> factors[2];
+  // Finds what patch p's correction in a window deposits along into w (windowable false when it
+  // cannot be corrected so). Reads `before`, `now` and what changed, writes only w.
+  void findWindow(const State& now, uint32_t p, Window& w) const;
+  // The window of pending patch p (just taken from `pending`): prepared by the last call, or
+  // found now beside the next pending patch's.
+  Window& windowOf(State& now, uint32_t p);
 
   // The patch of `now` whose elements are patch p's of `before` in the same order, or kNone.
   uint32_t samePatch(const State& b, const State& now, uint32_t p) const {
@@ -1034,6 +1058,13 @@ bool Solver::correct() {
   return true;
 }
 
+Solver::Edit::Window::Window(int resolution) : renderer({resolution, pxpl5::Projection::kHemisphere, 1}) {
+  // Every disk pixel weighs the same: pxpl5's share, one over their number.
+  const pxpl5::HemisphereFrame& empty = renderer.render({}, {}, pxpl5::PixelRect{});
+  const auto disk = std::count_if(empty.weights.begin(), empty.weights.end(), [](float weight) { return weight > 0; });
+  pixelShare = 1.0 / static_cast<double>(disk);
+}
+
 // A patch that did not change, shooting from the same point before and now, sees the same
 // except where the changed elements are seen (windowed_correction.h). Its take-back and resend
 // differ only there: both frames are rendered in that window; the receivers whose pixels or
@@ -1045,52 +1076,50 @@ bool Solver::correct() {
 // small receivers, here left out: at most that correction's change, a fraction of a percent
 // of the difference on the shipped scenes); what the difference does not deposit leaves as
 // escaped light, so the ledgers stay exact.
-bool Solver::correctInWindow(uint32_t p) {
-  Edit& e = *edit_;
-  State &before = *e.before, &now = *state_;
-
-  if (!before.settings.windowedCorrections) return false;
+void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
+  const State& old = *before;
+  w.patch = p;
+  w.windowable = false;
+  w.frames = 0;
   // The same patch now, shooting from the same point: its centre, where the centre was kept (a
   // point moved off the centre is chosen again from the centre, as the whole correction does).
-  const uint32_t q = e.samePatch(before, now, p);
-  if (q == kNone || !before.pointChosen[p] || std::isnan(before.pointBackShare[p]) ||
-      now.patchCentre[q] != before.patchCentre[p])
-    return false;
-  const uint32_t si = before.patchSurface[p];
-  const glm::dvec3 eye = before.patchCentre[p], up = before.surfaces[si].normal;
+  const uint32_t q = w.now = samePatch(old, now, p);
+  if (q == kNone || !old.pointChosen[p] || std::isnan(old.pointBackShare[p]) || now.patchCentre[q] != old.patchCentre[p]) return;
+  const uint32_t si = old.patchSurface[p];
+  const glm::dvec3 eye = old.patchCentre[p], up = old.surfaces[si].normal;
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(up));
-  const int resolution = before.settings.resolution;
+  const int resolution = old.settings.resolution;
 
   // The window: where the changed elements are seen, before or now, grown over what is seen there.
-  pxpl5::PixelRect changed{};
-  for (const Edit::Cluster& c : e.clusters)
-    if (c.surface != si) changed = unite(changed, sphereWindow(axes, eye, resolution, c.centre, c.radius));
-  WindowCull& cull = e.cull;
+  pxpl5::PixelRect changedWindow{};
+  for (const Cluster& c : clusters)
+    if (c.surface != si) changedWindow = unite(changedWindow, sphereWindow(axes, eye, resolution, c.centre, c.radius));
+  WindowCull& cull = w.cull;
   // Near and small receivers' factors are judged from their whole pixel counts or their
   // targets' items (judgeReceivers' first tests, before any pixel is read); the rest are counts.
-  const double nearLimit = before.settings.nearFieldRatio * before.patchRadius[p];
-  const double smallLimit = before.settings.smallReceiverPixels * before.pixelShare;
+  const double nearLimit = old.settings.nearFieldRatio * old.patchRadius[p];
+  const double smallLimit = old.settings.smallReceiverPixels * old.pixelShare;
   const auto whole = [&](uint32_t j) {
-    const double gap = glm::length(before.centre[j] - eye) - before.radius[j];
-    return gap < nearLimit || (glm::dot(before.normal[j], eye) > before.offset[j] && before.area[j] < smallLimit * kPi * gap * gap);
+    const double gap = glm::length(old.centre[j] - eye) - old.radius[j];
+    return gap < nearLimit || (glm::dot(old.normal[j], eye) > old.offset[j] && old.area[j] < smallLimit * kPi * gap * gap);
   };
-  cull.cull(before.spheres(), axes, eye, resolution, si, changed);
+  cull.cull(old.spheres(), axes, eye, resolution, si, changedWindow);
   // First both frames in the changed window alone, to find what differs there. Now is the same
   // as before outside it: the rest of it is before's seen through the elements' new indices.
-  std::vector<uint32_t>& drawnNow = e.drawnNow;
+  std::vector<uint32_t>& drawnNow = w.drawnNow;
   drawnNow.clear();
   for (uint32_t j : cull.drawn)
-    if (!e.changedBefore[j] && overlaps(cull.rectOf(j), changed)) drawnNow.push_back(e.elementNow[j]);
-  for (uint32_t i : e.changed[1])
-    if (now.surfaceOf[i] != si && overlaps(sphereWindow(axes, eye, resolution, now.centre[i], now.radius[i]), changed))
+    if (!changedBefore[j] && overlaps(cull.rectOf(j), changedWindow)) drawnNow.push_back(elementNow[j]);
+  for (uint32_t i : changed[1])
+    if (now.surfaceOf[i] != si && overlaps(sphereWindow(axes, eye, resolution, now.centre[i], now.radius[i]), changedWindow))
       drawnNow.push_back(i);
   std::sort(drawnNow.begin(), drawnNow.end());
-  const auto render = [&](State& s, std::span<const uint32_t> drawn, const pxpl5::PixelRect& window, int side) {
-    e.soup.clear();
-    for (uint32_t j : drawn) e.soup.push_back(s.soupPolygons[j]);
-    const pxpl5::HemisphereFrame& f = s.renderer.render({glm::vec3(eye), glm::vec3(up), {}}, {s.soupVertices, e.soup}, window);
-    ++now.stats.frames;
-    std::vector<uint32_t>& items = e.items[side];
+  const auto render = [&](const State& s, std::span<const uint32_t> drawn, const pxpl5::PixelRect& window, int side) {
+    w.soup.clear();
+    for (uint32_t j : drawn) w.soup.push_back(s.soupPolygons[j]);
+    const pxpl5::HemisphereFrame& f = w.renderer.render({glm::vec3(eye), glm::vec3(up), {}}, {s.soupVertices, w.soup}, window);
+    ++w.frames;
+    std::vector<uint32_t>& items = w.items[side];
     items.resize(f.items.size(), pxpl5::kNoValue);
     const size_t stride = static_cast<size_t>(f.stride);
     for (int y = window.y0; y < window.y1; ++y)
@@ -1098,57 +1127,59 @@ bool Solver::correctInWindow(uint32_t p) {
         const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
         items[at] = f.items[at] == pxpl5::kNoValue ? pxpl5::kNoValue : drawn[f.items[at]];
       }
-    pxpl5::HemisphereFrame& out = e.frame[side];
+    pxpl5::HemisphereFrame& out = w.frame[side];
     out.factors.assign(f.factors.begin(), f.factors.end());
     out.total = f.total;
     out.items = items;
     out.weights = f.weights;
     out.width = f.width, out.height = f.height, out.stride = f.stride;
-    return &out;
   };
-  const pxpl5::HemisphereFrame* frameBefore = render(before, cull.drawn, changed, 0);
-  pxpl5::HemisphereFrame& frameNow = *render(now, drawnNow, changed, 1);
+  render(old, cull.drawn, changedWindow, 0);
+  render(now, drawnNow, changedWindow, 1);
+  pxpl5::HemisphereFrame& frameNow = w.frame[1];
 
   // Judged again: the changed elements, and the others whose pixels or targets differ.
   const size_t stride = static_cast<size_t>(frameNow.stride);
-  const size_t changedWidth = static_cast<size_t>(changed.x1 - changed.x0);
-  e.differs.assign(static_cast<size_t>(pixelsOf(changed)), 0);
-  if (e.marked.size() < before.receiver.size()) e.marked.resize(before.receiver.size(), 0);
-  const uint32_t mark = ++e.correction;
-  for (int y = changed.y0; y < changed.y1; ++y)
-    for (int x = changed.x0; x < changed.x1; ++x) {
+  const size_t changedWidth = static_cast<size_t>(changedWindow.x1 - changedWindow.x0);
+  w.differs.assign(static_cast<size_t>(pixelsOf(changedWindow)), 0);
+  if (w.marked.size() < old.receiver.size()) w.marked.resize(old.receiver.size(), 0);
+  const uint32_t mark = ++w.correction;
+  for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
+    for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
       const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
-      const uint32_t b = e.items[0][at], n = e.items[1][at];
-      const bool changedB = b != pxpl5::kNoValue && e.changedBefore[b], changedN = n != pxpl5::kNoValue && e.changedNow[n];
-      const uint32_t bNow = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
-      if (!changedB && !changedN && bNow == n) continue;
-      e.differs[static_cast<size_t>(y - changed.y0) * changedWidth + static_cast<size_t>(x - changed.x0)] = 1;
-      if (b != pxpl5::kNoValue && !changedB) e.marked[b] = mark;
-      if (n != pxpl5::kNoValue && !changedN) e.marked[e.elementBefore[n]] = mark;
+      const uint32_t seenBefore = w.items[0][at], seenNow = w.items[1][at];
+      const bool changedB = seenBefore != pxpl5::kNoValue && changedBefore[seenBefore];
+      const bool changedN = seenNow != pxpl5::kNoValue && changedNow[seenNow];
+      const uint32_t beforeNow = seenBefore == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[seenBefore];
+      if (!changedB && !changedN && beforeNow == seenNow) continue;
+      w.differs[static_cast<size_t>(y - changedWindow.y0) * changedWidth + static_cast<size_t>(x - changedWindow.x0)] = 1;
+      if (seenBefore != pxpl5::kNoValue && !changedB) w.marked[seenBefore] = mark;
+      if (seenNow != pxpl5::kNoValue && !changedN) w.marked[elementBefore[seenNow]] = mark;
     }
-  std::vector<uint32_t>&judgedBefore = e.judged[0], &judgedNow = e.judged[1];
+  std::vector<uint32_t>&judgedBefore = w.judged[0], &judgedNow = w.judged[1];
   judgedBefore.clear();
   judgedNow.clear();
   for (uint32_t j : cull.judged) {
-    if (e.changedBefore[j]) continue;
-    if (e.marked[j] != mark) {
+    if (changedBefore[j]) continue;
+    if (w.marked[j] != mark) {
       // Only near and small receivers read items at their targets; the others' factors are
       // counts, unchanged when none of their pixels is.
       if (!whole(j)) continue;
-      for (size_t k = 0; k < State::kTargets && e.marked[j] != mark; ++k) {
+      for (size_t k = 0; k < State::kTargets && w.marked[j] != mark; ++k) {
         int x = 0, y = 0;
-        if (!targetPixel(axes, eye, resolution, before.targets[State::kTargets * j + k], x, y)) continue;
-        if (x < changed.x0 || x >= changed.x1 || y < changed.y0 || y >= changed.y1) continue;
-        if (e.differs[static_cast<size_t>(y - changed.y0) * changedWidth + static_cast<size_t>(x - changed.x0)]) e.marked[j] = mark;
+        if (!targetPixel(axes, eye, resolution, old.targets[State::kTargets * j + k], x, y)) continue;
+        if (x < changedWindow.x0 || x >= changedWindow.x1 || y < changedWindow.y0 || y >= changedWindow.y1) continue;
+        if (w.differs[static_cast<size_t>(y - changedWindow.y0) * changedWidth + static_cast<size_t>(x - changedWindow.x0)])
+          w.marked[j] = mark;
       }
-      if (e.marked[j] != mark) continue;
+      if (w.marked[j] != mark) continue;
     }
     judgedBefore.push_back(j);
-    judgedNow.push_back(e.elementNow[j]);
+    judgedNow.push_back(elementNow[j]);
   }
-  for (uint32_t j : e.changed[0])
-    if (before.surfaceOf[j] != si) judgedBefore.push_back(j);
-  for (uint32_t i : e.changed[1])
+  for (uint32_t j : changed[0])
+    if (old.surfaceOf[j] != si) judgedBefore.push_back(j);
+  for (uint32_t i : changed[1])
     if (now.surfaceOf[i] != si) judgedNow.push_back(i);
   std::sort(judgedBefore.begin(), judgedBefore.end());
   std::sort(judgedNow.begin(), judgedNow.end());
@@ -1156,47 +1187,68 @@ bool Solver::correctInWindow(uint32_t p) {
   // Then before again in the window grown over the judged receivers whose judgement reads more
   // than their count in it (the changed ones lie within it): only those need to be whole. The
   // receivers seen there that are not judged, which the grown window would hold too, do not.
-  pxpl5::PixelRect grown = changed;
+  pxpl5::PixelRect grown = changedWindow;
   for (uint32_t j : judgedBefore)
-    if (!e.changedBefore[j] && whole(j)) grown = unite(grown, cull.rectOf(j));
-  if (!contains(changed, grown)) {
+    if (!changedBefore[j] && whole(j)) grown = unite(grown, cull.rectOf(j));
+  if (!contains(changedWindow, grown)) {
     cull.drawWithin(grown);
-    frameBefore = render(before, cull.drawn, grown, 0);
-  }
-  if (e.pixelShare == 0) {
-    // Every disk pixel weighs the same: pxpl5's share, one over their number.
-    const auto disk = std::count_if(frameNow.weights.begin(), frameNow.weights.end(), [](float w) { return w > 0; });
-    e.pixelShare = 1.0 / static_cast<double>(disk);
+    render(old, cull.drawn, grown, 0);
   }
   {
-    std::vector<uint32_t>& items = e.items[1];
-    std::vector<uint32_t>& count = e.pixelCount;
+    std::vector<uint32_t>& items = w.items[1];
+    std::vector<uint32_t>& count = w.pixelCount;
     if (count.size() < now.receiver.size()) count.resize(now.receiver.size(), 0);
-    e.counted.clear();
+    w.counted.clear();
     for (int y = cull.window.y0; y < cull.window.y1; ++y)
       for (int x = cull.window.x0; x < cull.window.x1; ++x) {
         const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
-        if (y < changed.y0 || y >= changed.y1 || x < changed.x0 || x >= changed.x1) {
-          const uint32_t b = e.items[0][at];
-          items[at] = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
+        if (y < changedWindow.y0 || y >= changedWindow.y1 || x < changedWindow.x0 || x >= changedWindow.x1) {
+          const uint32_t seenBefore = w.items[0][at];
+          items[at] = seenBefore == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[seenBefore];
         }
-        if (const uint32_t i = items[at]; i != pxpl5::kNoValue && count[i]++ == 0) e.counted.push_back(i);
+        if (const uint32_t i = items[at]; i != pxpl5::kNoValue && count[i]++ == 0) w.counted.push_back(i);
       }
-    std::sort(e.counted.begin(), e.counted.end());
+    std::sort(w.counted.begin(), w.counted.end());
     frameNow.factors.clear();
     frameNow.total = 0;
-    for (uint32_t i : e.counted) {
-      frameNow.factors.push_back({i, static_cast<double>(std::exchange(count[i], 0)) * e.pixelShare});
+    for (uint32_t i : w.counted) {
+      frameNow.factors.push_back({i, static_cast<double>(std::exchange(count[i], 0)) * w.pixelShare});
       frameNow.total += frameNow.factors.back().factor;
     }
   }
 
-  // The centre's share of backs changes by the window's: it must still be kept now.
-  const double centreBacks = before.pointBackShare[p] - before.backShare(*frameBefore, eye) + now.backShare(frameNow, eye);
+  // The centre's share of backs changes by the window's (it must still be kept now: the caller).
+  w.centreBacks = old.pointBackShare[p] - old.backShare(w.frame[0], eye) + now.backShare(frameNow, eye);
+  w.windowable = true;
+}
+
+Solver::Edit::Window& Solver::Edit::windowOf(State& now, uint32_t p) {
+  if (nextPrepared && windows[1]->patch == p) {
+    nextPrepared = false;
+    return *windows[1];
+  }
+  const int resolution = before->settings.resolution;
+  for (std::unique_ptr<Window>& w : windows)
+    if (!w) w = std::make_unique<Window>(resolution);
+  nextPrepared = !pending.empty();
+  const uint32_t next = nextPrepared ? pending.back().patch : kNone;
+  now.renderer.runOnGraphicsProcessors(nextPrepared ? 2 : 1,
+                                       [&](size_t k, int) { findWindow(now, k == 0 ? p : next, *windows[k]); });
+  return *windows[0];
+}
+
+bool Solver::correctInWindow(uint32_t p) {
+  Edit& e = *edit_;
+  State &before = *e.before, &now = *state_;
+  if (!before.settings.windowedCorrections) return false;
+  const Edit::Window& w = e.windowOf(now, p);
+  now.stats.frames += w.frames;
+  if (!w.windowable) return false;
+  const uint32_t q = w.now;
   if (!now.pointChosen[q]) {
-    if (centreBacks > kMostBacks) return false;
+    if (w.centreBacks > kMostBacks) return false;
     now.pointChosen[q] = 1;
-    now.pointBackShare[q] = centreBacks;
+    now.pointBackShare[q] = w.centreBacks;
   }
 
   // Their factors before and now, from the same elements lit alike.
@@ -1210,8 +1262,8 @@ bool Solver::correctInWindow(uint32_t p) {
   }
   // The scales of p's last whole frame, for both: the window changes them by the change of its
   // judged receivers' corrections only.
-  before.listedFactors(p, *frameBefore, judgedBefore, before.patchScale[p], e.factors[0]);
-  now.listedFactors(q, frameNow, judgedNow, before.patchScale[p], e.factors[1]);
+  before.listedFactors(p, w.frame[0], w.judged[0], before.patchScale[p], e.factors[0]);
+  now.listedFactors(q, w.frame[1], w.judged[1], before.patchScale[p], e.factors[1]);
   now.patchScale[q] = before.patchScale[p];
 
   // Now less before; what fell on removed elements comes off their ledger.

@@ -120,6 +120,25 @@ TEST(RadiosityEdit, AWindowedCorrectionDepositsWhatAWholeOneDoes) {
   EXPECT_LT(worst, 0.005);
 }
 
+// Corrections in a window are found two at a time, the next pending one's beside this one's on
+// the other graphics processor (Solver::Edit::windowOf): the light comes out the same bit for bit
+// with one graphics processor or two.
+TEST(RadiosityEdit, CorrectionsAreIndependentOfGraphicsProcessors) {
+  SolverSettings two;
+  two.graphicsProcessors = 2;
+  Solver one(roomWithBoard(0, 0.4)), both(roomWithBoard(0, 0.4), two);
+  const std::vector<Surface> moved = roomWithBoard(0.15, 0.35);
+  for (Solver* solver : {&one, &both}) {
+    solver->solve(1e-2);
+    solver->edit(moved);
+    solver->solve(1e-2);
+  }
+  EXPECT_GT(both.stats().windowedCorrections, 1u);
+  EXPECT_EQ(one.stats().windowedCorrections, both.stats().windowedCorrections);
+  for (uint32_t s = 0; s < moved.size(); ++s)
+    for (size_t e = 0; e < moved[s].elements.size(); ++e) EXPECT_EQ(one.elementRadiance(s)[e], both.elementRadiance(s)[e]);
+}
+
 TEST(RadiosityEdit, NoChangeNoCorrectionsAndAWrongSceneIsRefused) {
   Solver solver(roomWithBoard(0, 0.4));
   solver.solve(1e-2);
