@@ -1023,6 +1023,23 @@ bool Solver::correct() {
   // The frame of the last point chosen is still the renderer's: it is that patch's shot frame.
   uint32_t lastChosen = kNone;
   const pxpl5::HemisphereFrame* lastFrame = nullptr;
+  // A patch of the same elements, unmoved, whose point was moved off its centre (the centre is
+  // inside a solid) keeps that point while it still sees few backs: one frame checks it, where
+  // choosing again renders up to five (the centre's, then the candidates'). A point outside the
+  // solids stays so unless a solid comes to stand on its element, which the check sees.
+  const std::span<const uint32_t> own = before.elementsOf(p);
+  if (const uint32_t same = edit_->samePatch(before, now, p);
+      same != kNone && !now.pointChosen[same] && before.pointChosen[p] && std::isnan(before.pointBackShare[p]) &&
+      std::none_of(own.begin(), own.end(), [&](uint32_t j) { return edit_->changedBefore[j]; })) {
+    const glm::dvec3 point = before.patchCentre[p];
+    const pxpl5::HemisphereFrame& frame = now.frameFrom(same, point);
+    if (now.backShare(frame, point) <= kMostBacks) {
+      now.pointChosen[same] = 1;
+      now.patchCentre[same] = point;
+      now.patchRadius[same] = before.patchRadius[p];
+      lastFrame = &frame, lastChosen = same;
+    }
+  }
   for (bool settled = false; !settled;) {
     patches.clear();
     for (uint32_t i : from) patches.push_back(now.patchOf[i]);
