@@ -735,7 +735,8 @@ struct Solver::Edit {
     double radius = 0;
     uint32_t surface = 0;
   };
-  std::vector<Cluster> clusters;  // per surface and geometry, a sphere around its changed elements
+  std::vector<Cluster> clusters;  // per surface and geometry, spheres around its changed elements
+  static constexpr size_t kClusterElements = 32;
   // A correction in a window is found in two parts: what its window holds (frames before and
   // now, the receivers judged again), which reads only geometry that no correction changes, and
   // the deposits, which must come in turn. So the first part of the next pending correction is
@@ -873,19 +874,16 @@ void Solver::edit(std::span<const Surface> surfaces) {
   n.stats.splitPatches = splits;
   edit->changedNow.assign(n.receiver.size(), 0);
   for (uint32_t i : changed[1]) edit->changedNow[i] = 1;
-  // Per surface and geometry, a sphere around its changed elements: a tighter bound on what a
-  // patch sees of them than their sum, and the window a correction looks through.
+  // Per surface and geometry, spheres around its changed elements (a few dozen in each): a
+  // tighter bound on what a patch sees of them than their sum, and the window a correction looks
+  // through.
   for (int side = 0; side < 2; ++side) {
     const State& s = side == 0 ? old : n;
     std::map<uint32_t, std::vector<uint32_t>> bySurface;
     for (uint32_t j : changed[side]) bySurface[s.surfaceOf[j]].push_back(j);
-    for (const auto& [surface, elements] : bySurface) {
-      glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-      for (uint32_t j : elements) lo = glm::min(lo, s.centre[j] - s.radius[j]), hi = glm::max(hi, s.centre[j] + s.radius[j]);
-      Edit::Cluster c{0.5 * (lo + hi), 0, surface};
-      for (uint32_t j : elements) c.radius = std::max(c.radius, glm::length(s.centre[j] - c.centre) + s.radius[j]);
-      edit->clusters.push_back(c);
-    }
+    for (auto& [surface, elements] : bySurface)
+      for (const Sphere& c : sphereClusters(s.centre, s.radius, elements, Edit::kClusterElements))
+        edit->clusters.push_back({c.centre, c.radius, surface});
   }
 
   // The light of patch p that can change course is what reaches the changed elements, before or
