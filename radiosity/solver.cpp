@@ -108,8 +108,8 @@ struct Solver::State {
   std::vector<glm::dvec3> patchCentre, unshot, shot;
   std::vector<double> patchArea, patchRadius;
   std::vector<uint8_t> pointChosen;  // patchCentre[p] checked for seeing fronts (see choosePoint)
-  // The share of backs the centre saw when choosePoint kept it, else NaN: a window correction
-  // updates it by what changed in its window (Solver::correctInWindow).
+  // The share of backs patchCentre[p] saw when choosePoint chose it, else NaN: a window
+  // correction updates it by what changed in its window (Solver::correctInWindow).
   std::vector<double> pointBackShare;
   // The energy scales of patch p's last frame (distribute): of its pixel factors, of its judged
   // ones. A window correction, which sees part of a frame, applies them to its differences.
@@ -408,6 +408,7 @@ const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
   double r = 0;
   for (int k = 0; k < corners.n; ++k) r = std::max(r, glm::length(corners.v[k] - bestPoint));
   patchRadius[p] = r;
+  pointBackShare[p] = best;
   ++stats.movedShooters;
   return last;
 }
@@ -750,7 +751,7 @@ struct Solver::Edit {
     // What correctInWindow deposits along, for patch `patch` before, `now` now.
     uint32_t patch = kNone, now = kNone;
     bool windowable = false;
-    double centreBacks = 0;     // the share of backs its centre sees now (choosePoint's measure)
+    double pointBacks = 0;      // the share of backs its point sees now (choosePoint's measure)
     uint64_t frames = 0;        // hemisphere frames rendered for it
     pxpl5::HemisphereFrame frame[2];
     std::vector<uint32_t> judged[2];
@@ -775,6 +776,7 @@ struct Solver::Edit {
   Window& windowOf(State& now, uint32_t p);
 
   // The patch of `now` whose elements are patch p's of `before` in the same order, or kNone.
+  // unmovedPatch: the same, where none of them moved.
   uint32_t samePatch(const State& b, const State& now, uint32_t p) const {
     const std::span<const uint32_t> own = b.elementsOf(p);
     const uint32_t first = elementNow[own.front()];
@@ -785,6 +787,11 @@ struct Solver::Edit {
     for (size_t k = 0; k < own.size(); ++k)
       if (elementNow[own[k]] != theirs[k]) return kNone;
     return q;
+  }
+  uint32_t unmovedPatch(const State& b, const State& now, uint32_t p) const {
+    const std::span<const uint32_t> own = b.elementsOf(p);
+    if (std::any_of(own.begin(), own.end(), [&](uint32_t j) { return changedBefore[j] != 0; })) return kNone;
+    return samePatch(b, now, p);
   }
 };
 
@@ -1025,10 +1032,8 @@ bool Solver::correct() {
   // inside a solid) keeps that point while it still sees few backs: one frame checks it, where
   // choosing again renders up to five (the centre's, then the candidates'). A point outside the
   // solids stays so unless a solid comes to stand on its element, which the check sees.
-  const std::span<const uint32_t> own = before.elementsOf(p);
-  if (const uint32_t same = edit_->samePatch(before, now, p);
-      same != kNone && !now.pointChosen[same] && before.pointChosen[p] && std::isnan(before.pointBackShare[p]) &&
-      std::none_of(own.begin(), own.end(), [&](uint32_t j) { return edit_->changedBefore[j]; })) {
+  if (const uint32_t same = edit_->unmovedPatch(before, now, p);
+      same != kNone && !now.pointChosen[same] && before.pointChosen[p] && now.patchCentre[same] != before.patchCentre[p]) {
     const glm::dvec3 point = before.patchCentre[p];
     const pxpl5::HemisphereFrame& frame = now.frameFrom(same, point);
     if (now.backShare(frame, point) <= kMostBacks) {
@@ -1096,10 +1101,10 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   w.patch = p;
   w.windowable = false;
   w.frames = 0;
-  // The same patch now, shooting from the same point: its centre, where the centre was kept (a
-  // point moved off the centre is chosen again from the centre, as the whole correction does).
-  const uint32_t q = w.now = samePatch(old, now, p);
-  if (q == kNone || !old.pointChosen[p] || std::isnan(old.pointBackShare[p]) || now.patchCentre[q] != old.patchCentre[p]) return;
+  // The same patch now, of unmoved elements, shooting from the same point: its centre, or the
+  // point it was moved to off a centre inside a solid (kept while it sees few backs: the caller).
+  const uint32_t q = w.now = unmovedPatch(old, now, p);
+  if (q == kNone || !old.pointChosen[p]) return;
   const uint32_t si = old.patchSurface[p];
   const glm::dvec3 eye = old.patchCentre[p], up = old.surfaces[si].normal;
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(up));
@@ -1232,8 +1237,8 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
     }
   }
 
-  // The centre's share of backs changes by the window's (it must still be kept now: the caller).
-  w.centreBacks = old.pointBackShare[p] - old.backShare(w.frame[0], eye) + now.backShare(frameNow, eye);
+  // The point's share of backs changes by the window's (it must still be kept now: the caller).
+  w.pointBacks = old.pointBackShare[p] - old.backShare(w.frame[0], eye) + now.backShare(frameNow, eye);
   w.windowable = true;
 }
 
@@ -1261,9 +1266,11 @@ bool Solver::correctInWindow(uint32_t p) {
   if (!w.windowable) return false;
   const uint32_t q = w.now;
   if (!now.pointChosen[q]) {
-    if (w.centreBacks > kMostBacks) return false;
+    if (w.pointBacks > kMostBacks) return false;
     now.pointChosen[q] = 1;
-    now.pointBackShare[q] = w.centreBacks;
+    now.pointBackShare[q] = w.pointBacks;
+    now.patchCentre[q] = before.patchCentre[p];
+    now.patchRadius[q] = before.patchRadius[p];
   }
 
   // Their factors before and now, from the same elements lit alike.

@@ -122,7 +122,8 @@ TEST(RadiosityEdit, AWindowedCorrectionDepositsWhatAWholeOneDoes) {
 
 // A floor element whose centre is under a box shoots from a point moved off its centre (see
 // choosePoint in solver.cpp). The box stays where it is, so after the board moves its
-// correction keeps that point instead of choosing among the candidates again.
+// correction keeps that point instead of choosing among the candidates again, and corrects in
+// a window of its hemisphere as a patch shooting from its centre does.
 TEST(RadiosityEdit, APointMovedOffItsCentreIsKeptByItsCorrection) {
   const auto scene = [](double dx) {
     std::vector<Surface> s = roomWithBoard(dx, 0.4);
@@ -143,6 +144,9 @@ TEST(RadiosityEdit, APointMovedOffItsCentreIsKeptByItsCorrection) {
   solver.edit(scene(0.15));
   solver.solve(1e-3);
   EXPECT_EQ(solver.stats().movedShooters, moved);
+  // Only the board's patches, which moved, take back all of their light.
+  const std::vector<Surface> after = scene(0.15);
+  EXPECT_EQ(solver.stats().corrections - solver.stats().windowedCorrections, after[7].elements.size() + after[8].elements.size());
   EXPECT_LT(ledgerResidual(solver), 1e-12);
   Solver fresh(scene(0.15));
   fresh.solve(1e-3);
