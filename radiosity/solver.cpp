@@ -757,13 +757,13 @@ struct Solver::Edit {
     std::vector<uint32_t> judged[2];
     // Scratch.
     WindowCull cull;
-    std::vector<uint32_t> drawnNow;
+    std::vector<uint32_t> drawn[3];  // elements drawn: unchanged, gone (before), came (now)
     std::vector<uint32_t> marked;  // per element before: the correction that marked it for judging
     uint32_t correction = 0;
     std::vector<pxpl5::Polygon> soup;
-    std::vector<uint32_t> items[2];  // per pixel, the element seen (within the window)
+    std::vector<uint32_t> items[3];  // per pixel, the element seen (within the window): before, now, gone
     std::vector<uint8_t> differs;    // per pixel of the changed window
-    std::vector<uint32_t> pixelCount, counted;  // per element now, its pixels in the grown window
+    std::vector<uint32_t> pixelCount, counted;  // per element, its pixels in the grown window
   };
   std::array<std::unique_ptr<Window>, 2> windows;  // made at the first correction in a window
   bool nextPrepared = false;  // windows[1] holds the next pending correction's window
@@ -1124,42 +1124,61 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
     return gap < nearLimit || (glm::dot(old.normal[j], eye) > old.offset[j] && old.area[j] < smallLimit * kPi * gap * gap);
   };
   cull.cull(old.spheres(), axes, eye, resolution, si, changedWindow);
-  // First both frames in the changed window alone, to find what differs there. Now is the same
-  // as before outside it: the rest of it is before's seen through the elements' new indices.
-  std::vector<uint32_t>& drawnNow = w.drawnNow;
-  drawnNow.clear();
-  for (uint32_t j : cull.drawn)
-    if (!changedBefore[j] && overlaps(cull.rectOf(j), changedWindow)) drawnNow.push_back(elementNow[j]);
+  // First both frames in the changed window alone, to find what differs there. The elements
+  // that did not change are drawn once for both, the changed ones before and now each on their
+  // own, and a pixel shows the nearest of what it has (along its direction to their planes; an
+  // exact tie keeps the unchanged element): the cost of one frame and of what changed, not of
+  // two frames. Now is the same as before outside the window: before's through the elements'
+  // new indices.
+  std::vector<uint32_t>&still = w.drawn[0], &gone = w.drawn[1], &came = w.drawn[2];
+  still.clear(), gone.clear(), came.clear();
+  for (uint32_t j : cull.drawn) (changedBefore[j] ? gone : still).push_back(j);
   for (uint32_t i : changed[1])
     if (now.surfaceOf[i] != si && overlaps(sphereWindow(axes, eye, resolution, now.centre[i], now.radius[i]), changedWindow))
-      drawnNow.push_back(i);
-  std::sort(drawnNow.begin(), drawnNow.end());
-  const auto render = [&](const State& s, std::span<const uint32_t> drawn, const pxpl5::PixelRect& window, int side) {
+      came.push_back(i);
+  std::sort(came.begin(), came.end());
+  // Draws `drawn` (elements of s) within `window` into items (their element indices).
+  size_t stride = 0;
+  const auto render = [&](const State& s, std::span<const uint32_t> drawn, const pxpl5::PixelRect& window,
+                          std::vector<uint32_t>& items) {
     w.soup.clear();
     for (uint32_t j : drawn) w.soup.push_back(s.soupPolygons[j]);
     const pxpl5::HemisphereFrame& f = w.renderer.render({glm::vec3(eye), glm::vec3(up), {}}, {s.soupVertices, w.soup}, window);
     ++w.frames;
-    std::vector<uint32_t>& items = w.items[side];
     items.resize(f.items.size(), pxpl5::kNoValue);
-    const size_t stride = static_cast<size_t>(f.stride);
+    stride = static_cast<size_t>(f.stride);
     for (int y = window.y0; y < window.y1; ++y)
       for (int x = window.x0; x < window.x1; ++x) {
         const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
         items[at] = f.items[at] == pxpl5::kNoValue ? pxpl5::kNoValue : drawn[f.items[at]];
       }
-    pxpl5::HemisphereFrame& out = w.frame[side];
-    out.factors.assign(f.factors.begin(), f.factors.end());
-    out.total = f.total;
-    out.items = items;
-    out.weights = f.weights;
-    out.width = f.width, out.height = f.height, out.stride = f.stride;
+    for (pxpl5::HemisphereFrame& frame : w.frame)
+      frame.weights = f.weights, frame.width = f.width, frame.height = f.height, frame.stride = f.stride;
   };
-  render(old, cull.drawn, changedWindow, 0);
-  render(now, drawnNow, changedWindow, 1);
-  pxpl5::HemisphereFrame& frameNow = w.frame[1];
+  // What pixel (x, y) of geometry s shows of element `behind` (or nothing) with `over` drawn too.
+  const auto shown = [&](const State& s, uint32_t behind, uint32_t over, int x, int y) {
+    if (over == pxpl5::kNoValue) return behind;
+    if (behind == pxpl5::kNoValue) return over;
+    const double u = (x + 0.5) * 2 / resolution - 1, v = (y + 0.5) * 2 / resolution - 1;
+    const glm::dvec3 direction = axes.x * u + axes.y * v + axes.z * std::sqrt(std::max(0.0, 1 - u * u - v * v));
+    const auto distance = [&](uint32_t j) {
+      return std::abs((s.offset[j] - glm::dot(s.normal[j], eye)) / glm::dot(s.normal[j], direction));
+    };
+    return distance(over) < distance(behind) ? over : behind;
+  };
+  std::vector<uint32_t>&itemsBefore = w.items[0], &itemsNow = w.items[1], &itemsGone = w.items[2];
+  render(old, gone, changedWindow, itemsGone);
+  render(now, came, changedWindow, itemsNow);
+  render(old, still, changedWindow, itemsBefore);
+  for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
+    for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
+      const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+      const uint32_t behind = itemsBefore[at];
+      itemsNow[at] = shown(now, behind == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[behind], itemsNow[at], x, y);
+      itemsBefore[at] = shown(old, behind, itemsGone[at], x, y);
+    }
 
   // Judged again: the changed elements, and the others whose pixels or targets differ.
-  const size_t stride = static_cast<size_t>(frameNow.stride);
   const size_t changedWidth = static_cast<size_t>(changedWindow.x1 - changedWindow.x0);
   w.differs.assign(static_cast<size_t>(pixelsOf(changedWindow)), 0);
   if (w.marked.size() < old.receiver.size()) w.marked.resize(old.receiver.size(), 0);
@@ -1167,7 +1186,7 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
     for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
       const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
-      const uint32_t seenBefore = w.items[0][at], seenNow = w.items[1][at];
+      const uint32_t seenBefore = itemsBefore[at], seenNow = itemsNow[at];
       const bool changedB = seenBefore != pxpl5::kNoValue && changedBefore[seenBefore];
       const bool changedN = seenNow != pxpl5::kNoValue && changedNow[seenNow];
       const uint32_t beforeNow = seenBefore == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[seenBefore];
@@ -1212,33 +1231,46 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
     if (!changedBefore[j] && whole(j)) grown = unite(grown, cull.rectOf(j));
   if (!contains(changedWindow, grown)) {
     cull.drawWithin(grown);
-    render(old, cull.drawn, grown, 0);
+    still.clear();
+    for (uint32_t j : cull.drawn)
+      if (!changedBefore[j]) still.push_back(j);
+    render(old, still, grown, itemsBefore);
+    for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
+      for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
+        const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+        itemsBefore[at] = shown(old, itemsBefore[at], itemsGone[at], x, y);
+      }
   }
-  {
-    std::vector<uint32_t>& items = w.items[1];
+  // Now outside the changed window, and both frames' factors: their pixels in the grown window.
+  for (int y = cull.window.y0; y < cull.window.y1; ++y)
+    for (int x = cull.window.x0; x < cull.window.x1; ++x) {
+      if (y >= changedWindow.y0 && y < changedWindow.y1 && x >= changedWindow.x0 && x < changedWindow.x1) continue;
+      const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+      itemsNow[at] = itemsBefore[at] == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[itemsBefore[at]];
+    }
+  for (int side = 0; side < 2; ++side) {
     std::vector<uint32_t>& count = w.pixelCount;
-    if (count.size() < now.receiver.size()) count.resize(now.receiver.size(), 0);
+    if (count.size() < std::max(old.receiver.size(), now.receiver.size()))
+      count.resize(std::max(old.receiver.size(), now.receiver.size()), 0);
     w.counted.clear();
     for (int y = cull.window.y0; y < cull.window.y1; ++y)
       for (int x = cull.window.x0; x < cull.window.x1; ++x) {
         const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
-        if (y < changedWindow.y0 || y >= changedWindow.y1 || x < changedWindow.x0 || x >= changedWindow.x1) {
-          const uint32_t seenBefore = w.items[0][at];
-          items[at] = seenBefore == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[seenBefore];
-        }
-        if (const uint32_t i = items[at]; i != pxpl5::kNoValue && count[i]++ == 0) w.counted.push_back(i);
+        if (const uint32_t i = w.items[side][at]; i != pxpl5::kNoValue && count[i]++ == 0) w.counted.push_back(i);
       }
     std::sort(w.counted.begin(), w.counted.end());
-    frameNow.factors.clear();
-    frameNow.total = 0;
+    pxpl5::HemisphereFrame& frame = w.frame[side];
+    frame.items = w.items[side];
+    frame.factors.clear();
+    frame.total = 0;
     for (uint32_t i : w.counted) {
-      frameNow.factors.push_back({i, static_cast<double>(std::exchange(count[i], 0)) * w.pixelShare});
-      frameNow.total += frameNow.factors.back().factor;
+      frame.factors.push_back({i, static_cast<double>(std::exchange(count[i], 0)) * w.pixelShare});
+      frame.total += frame.factors.back().factor;
     }
   }
 
   // The point's share of backs changes by the window's (it must still be kept now: the caller).
-  w.pointBacks = old.pointBackShare[p] - old.backShare(w.frame[0], eye) + now.backShare(frameNow, eye);
+  w.pointBacks = old.pointBackShare[p] - old.backShare(w.frame[0], eye) + now.backShare(w.frame[1], eye);
   w.windowable = true;
 }
 
