@@ -201,8 +201,8 @@ class Solver {
   // One take-back (edit()); false when none is pending.
   bool correct();
   // The take-back of patch p (of the geometry before the edit) as a difference in a window of
-  // its hemisphere, when it did not change and the window is worth it; false (and nothing done)
-  // otherwise.
+  // its hemisphere, when it did not change and the window is worth it; false (and no light
+  // moved) otherwise. It finds the next pending patch's window beside p's (solver.cpp).
   bool correctInWindow(uint32_t p);
   std::unique_ptr<State> state_;
   std::unique_ptr<Edit> edit_;

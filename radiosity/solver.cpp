@@ -108,8 +108,8 @@ struct Solver::State {
   std::vector<glm::dvec3> patchCentre, unshot, shot;
   std::vector<double> patchArea, patchRadius;
   std::vector<uint8_t> pointChosen;  // patchCentre[p] checked for seeing fronts (see choosePoint)
-  // The share of backs the centre saw when choosePoint kept it, else NaN: a window correction
-  // updates it by what changed in its window (Solver::correctInWindow).
+  // The share of backs patchCentre[p] saw when choosePoint chose it, else NaN: a window
+  // correction updates it by what changed in its window (Solver::correctInWindow).
   std::vector<double> pointBackShare;
   // The energy scales of patch p's last frame (distribute): of its pixel factors, of its judged
   // ones. A window correction, which sees part of a frame, applies them to its differences.
@@ -428,6 +428,7 @@ const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
   double r = 0;
   for (int k = 0; k < corners.n; ++k) r = std::max(r, glm::length(corners.v[k] - bestPoint));
   patchRadius[p] = r;
+  pointBackShare[p] = best;
   ++stats.movedShooters;
   return last;
 }
@@ -788,21 +789,47 @@ struct Solver::Edit {
     double radius = 0;
     uint32_t surface = 0;
   };
-  std::vector<Cluster> clusters;  // per surface and geometry, a sphere around its changed elements
-  // Scratch of one correction in a window.
-  WindowCull cull;
-  std::vector<uint32_t> drawnNow, judged[2];
-  std::vector<uint32_t> marked;  // per element before: the correction that marked it for judging
-  uint32_t correction = 0;
-  std::vector<pxpl5::Polygon> soup;
-  std::vector<uint32_t> items[2];  // per pixel, the element seen (within the window)
-  std::vector<uint8_t> differs;    // per pixel of the changed window
-  pxpl5::HemisphereFrame frame[2];
-  std::vector<uint32_t> pixelCount, counted;  // per element now, its pixels in the grown window
-  double pixelShare = 0;                      // the factor of one disk pixel
+  std::vector<Cluster> clusters;  // per surface and geometry, spheres around its changed elements
+  static constexpr size_t kClusterElements = 32;
+  // A correction in a window is found in two parts: what its window holds (frames before and
+  // now, the receivers judged again), which reads only geometry that no correction changes, and
+  // the deposits, which must come in turn. So the first part of the next pending correction is
+  // done beside this one's, on the other graphics processor: each Window has its own scratch and
+  // renderer (of one graphics processor, which runs on the thread that calls it). Their results
+  // are the same as one after the other.
+  struct Window {
+    explicit Window(int resolution);
+    pxpl5::HemisphereRenderer renderer;
+    double pixelShare = 0;  // the factor of one disk pixel
+    // What correctInWindow deposits along, for patch `patch` before, `now` now.
+    uint32_t patch = kNone, now = kNone;
+    bool windowable = false;
+    double pointBacks = 0;      // the share of backs its point sees now (choosePoint's measure)
+    uint64_t frames = 0;        // hemisphere frames rendered for it
+    pxpl5::HemisphereFrame frame[2];
+    std::vector<uint32_t> judged[2];
+    // Scratch.
+    WindowCull cull;
+    std::vector<uint32_t> drawn[3];  // elements drawn: unchanged, gone (before), came (now)
+    std::vector<uint32_t> marked;  // per element before: the correction that marked it for judging
+    uint32_t correction = 0;
+    std::vector<pxpl5::Polygon> soup;
+    std::vector<uint32_t> items[3];  // per pixel, the element seen (within the window): before, now, gone
+    std::vector<uint8_t> differs;    // per pixel of the changed window
+    std::vector<uint32_t> pixelCount, counted;  // per element, its pixels in the grown window
+  };
+  std::array<std::unique_ptr<Window>, 2> windows;  // made at the first correction in a window
+  bool nextPrepared = false;  // windows[1] holds the next pending correction's window
   std::vector<State::NewFactor> factors[2];
+  // Finds what patch p's correction in a window deposits along into w (windowable false when it
+  // cannot be corrected so). Reads `before`, `now` and what changed, writes only w.
+  void findWindow(const State& now, uint32_t p, Window& w) const;
+  // The window of pending patch p (just taken from `pending`): prepared by the last call, or
+  // found now beside the next pending patch's.
+  Window& windowOf(State& now, uint32_t p);
 
   // The patch of `now` whose elements are patch p's of `before` in the same order, or kNone.
+  // unmovedPatch: the same, where none of them moved.
   uint32_t samePatch(const State& b, const State& now, uint32_t p) const {
     const std::span<const uint32_t> own = b.elementsOf(p);
     const uint32_t first = elementNow[own.front()];
@@ -813,6 +840,11 @@ struct Solver::Edit {
     for (size_t k = 0; k < own.size(); ++k)
       if (elementNow[own[k]] != theirs[k]) return kNone;
     return q;
+  }
+  uint32_t unmovedPatch(const State& b, const State& now, uint32_t p) const {
+    const std::span<const uint32_t> own = b.elementsOf(p);
+    if (std::any_of(own.begin(), own.end(), [&](uint32_t j) { return changedBefore[j] != 0; })) return kNone;
+    return samePatch(b, now, p);
   }
 };
 
@@ -902,19 +934,16 @@ void Solver::edit(std::span<const Surface> surfaces) {
   n.stats.splitPatches = splits;
   edit->changedNow.assign(n.receiver.size(), 0);
   for (uint32_t i : changed[1]) edit->changedNow[i] = 1;
-  // Per surface and geometry, a sphere around its changed elements: a tighter bound on what a
-  // patch sees of them than their sum, and the window a correction looks through.
+  // Per surface and geometry, spheres around its changed elements (a few dozen in each): a
+  // tighter bound on what a patch sees of them than their sum, and the window a correction looks
+  // through.
   for (int side = 0; side < 2; ++side) {
     const State& s = side == 0 ? old : n;
     std::map<uint32_t, std::vector<uint32_t>> bySurface;
     for (uint32_t j : changed[side]) bySurface[s.surfaceOf[j]].push_back(j);
-    for (const auto& [surface, elements] : bySurface) {
-      glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-      for (uint32_t j : elements) lo = glm::min(lo, s.centre[j] - s.radius[j]), hi = glm::max(hi, s.centre[j] + s.radius[j]);
-      Edit::Cluster c{0.5 * (lo + hi), 0, surface};
-      for (uint32_t j : elements) c.radius = std::max(c.radius, glm::length(s.centre[j] - c.centre) + s.radius[j]);
-      edit->clusters.push_back(c);
-    }
+    for (auto& [surface, elements] : bySurface)
+      for (const Sphere& c : sphereClusters(s.centre, s.radius, elements, Edit::kClusterElements))
+        edit->clusters.push_back({c.centre, c.radius, surface});
   }
 
   // The light of patch p that can change course is what reaches the changed elements, before or
@@ -1052,6 +1081,21 @@ bool Solver::correct() {
   // The frame of the last point chosen is still the renderer's: it is that patch's shot frame.
   uint32_t lastChosen = kNone;
   const pxpl5::HemisphereFrame* lastFrame = nullptr;
+  // A patch of the same elements, unmoved, whose point was moved off its centre (the centre is
+  // inside a solid) keeps that point while it still sees few backs: one frame checks it, where
+  // choosing again renders up to five (the centre's, then the candidates'). A point outside the
+  // solids stays so unless a solid comes to stand on its element, which the check sees.
+  if (const uint32_t same = edit_->unmovedPatch(before, now, p);
+      same != kNone && !now.pointChosen[same] && before.pointChosen[p] && now.patchCentre[same] != before.patchCentre[p]) {
+    const glm::dvec3 point = before.patchCentre[p];
+    const pxpl5::HemisphereFrame& frame = now.frameFrom(same, point);
+    if (now.backShare(frame, point) <= kMostBacks) {
+      now.pointChosen[same] = 1;
+      now.patchCentre[same] = point;
+      now.patchRadius[same] = before.patchRadius[p];
+      lastFrame = &frame, lastChosen = same;
+    }
+  }
   for (bool settled = false; !settled;) {
     patches.clear();
     for (uint32_t i : from) patches.push_back(now.patchOf[i]);
@@ -1087,6 +1131,13 @@ bool Solver::correct() {
   return true;
 }
 
+Solver::Edit::Window::Window(int resolution) : renderer({resolution, pxpl5::Projection::kHemisphere, 1}) {
+  // Every disk pixel weighs the same: pxpl5's share, one over their number.
+  const pxpl5::HemisphereFrame& empty = renderer.render({}, {}, pxpl5::PixelRect{});
+  const auto disk = std::count_if(empty.weights.begin(), empty.weights.end(), [](float weight) { return weight > 0; });
+  pixelShare = 1.0 / static_cast<double>(disk);
+}
+
 // A patch that did not change, shooting from the same point before and now, sees the same
 // except where the changed elements are seen (windowed_correction.h). Its take-back and resend
 // differ only there: both frames are rendered in that window; the receivers whose pixels or
@@ -1098,110 +1149,129 @@ bool Solver::correct() {
 // small receivers, here left out: at most that correction's change, a fraction of a percent
 // of the difference on the shipped scenes); what the difference does not deposit leaves as
 // escaped light, so the ledgers stay exact.
-bool Solver::correctInWindow(uint32_t p) {
-  Edit& e = *edit_;
-  State &before = *e.before, &now = *state_;
-
-  if (!before.settings.windowedCorrections) return false;
-  // The same patch now, shooting from the same point: its centre, where the centre was kept (a
-  // point moved off the centre is chosen again from the centre, as the whole correction does).
-  const uint32_t q = e.samePatch(before, now, p);
-  if (q == kNone || !before.pointChosen[p] || std::isnan(before.pointBackShare[p]) ||
-      now.patchCentre[q] != before.patchCentre[p])
-    return false;
-  const uint32_t si = before.patchSurface[p];
-  const glm::dvec3 eye = before.patchCentre[p], up = before.surfaces[si].normal;
+void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
+  const State& old = *before;
+  w.patch = p;
+  w.windowable = false;
+  w.frames = 0;
+  // The same patch now, of unmoved elements, shooting from the same point: its centre, or the
+  // point it was moved to off a centre inside a solid (kept while it sees few backs: the caller).
+  const uint32_t q = w.now = unmovedPatch(old, now, p);
+  if (q == kNone || !old.pointChosen[p]) return;
+  const uint32_t si = old.patchSurface[p];
+  const glm::dvec3 eye = old.patchCentre[p], up = old.surfaces[si].normal;
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(up));
-  const int resolution = before.settings.resolution;
+  const int resolution = old.settings.resolution;
 
   // The window: where the changed elements are seen, before or now, grown over what is seen there.
-  pxpl5::PixelRect changed{};
-  for (const Edit::Cluster& c : e.clusters)
-    if (c.surface != si) changed = unite(changed, sphereWindow(axes, eye, resolution, c.centre, c.radius));
-  WindowCull& cull = e.cull;
+  pxpl5::PixelRect changedWindow{};
+  for (const Cluster& c : clusters)
+    if (c.surface != si) changedWindow = unite(changedWindow, sphereWindow(axes, eye, resolution, c.centre, c.radius));
+  WindowCull& cull = w.cull;
   // Near and small receivers' factors are judged from their whole pixel counts or their
   // targets' items (judgeReceivers' first tests, before any pixel is read); the rest are counts.
-  const double nearLimit = before.settings.nearFieldRatio * before.patchRadius[p];
-  const double smallLimit = before.settings.smallReceiverPixels * before.pixelShare;
+  const double nearLimit = old.settings.nearFieldRatio * old.patchRadius[p];
+  const double smallLimit = old.settings.smallReceiverPixels * old.pixelShare;
   const auto whole = [&](uint32_t j) {
-    const double gap = glm::length(before.centre[j] - eye) - before.radius[j];
-    return gap < nearLimit || (glm::dot(before.normal[j], eye) > before.offset[j] && before.area[j] < smallLimit * kPi * gap * gap);
+    const double gap = glm::length(old.centre[j] - eye) - old.radius[j];
+    return gap < nearLimit || (glm::dot(old.normal[j], eye) > old.offset[j] && old.area[j] < smallLimit * kPi * gap * gap);
   };
-  cull.cull(before.spheres(), axes, eye, resolution, si, changed);
-  // First both frames in the changed window alone, to find what differs there. Now is the same
-  // as before outside it: the rest of it is before's seen through the elements' new indices.
-  std::vector<uint32_t>& drawnNow = e.drawnNow;
-  drawnNow.clear();
-  for (uint32_t j : cull.drawn)
-    if (!e.changedBefore[j] && overlaps(cull.rectOf(j), changed)) drawnNow.push_back(e.elementNow[j]);
-  for (uint32_t i : e.changed[1])
-    if (now.surfaceOf[i] != si && overlaps(sphereWindow(axes, eye, resolution, now.centre[i], now.radius[i]), changed))
-      drawnNow.push_back(i);
-  std::sort(drawnNow.begin(), drawnNow.end());
-  const auto render = [&](State& s, std::span<const uint32_t> drawn, const pxpl5::PixelRect& window, int side) {
-    e.soup.clear();
-    for (uint32_t j : drawn) e.soup.push_back(s.soupPolygons[j]);
-    const pxpl5::HemisphereFrame& f = s.renderer.render({glm::vec3(eye), glm::vec3(up), {}}, {s.soupVertices, e.soup}, window);
-    ++now.stats.frames;
-    std::vector<uint32_t>& items = e.items[side];
+  cull.cull(old.spheres(), axes, eye, resolution, si, changedWindow);
+  // First both frames in the changed window alone, to find what differs there. The elements
+  // that did not change are drawn once for both, the changed ones before and now each on their
+  // own, and a pixel shows the nearest of what it has (along its direction to their planes; an
+  // exact tie keeps the unchanged element): the cost of one frame and of what changed, not of
+  // two frames. Now is the same as before outside the window: before's through the elements'
+  // new indices.
+  std::vector<uint32_t>&still = w.drawn[0], &gone = w.drawn[1], &came = w.drawn[2];
+  still.clear(), gone.clear(), came.clear();
+  for (uint32_t j : cull.drawn) (changedBefore[j] ? gone : still).push_back(j);
+  for (uint32_t i : changed[1])
+    if (now.surfaceOf[i] != si && overlaps(sphereWindow(axes, eye, resolution, now.centre[i], now.radius[i]), changedWindow))
+      came.push_back(i);
+  std::sort(came.begin(), came.end());
+  // Draws `drawn` (elements of s) within `window` into items (their element indices).
+  size_t stride = 0;
+  const auto render = [&](const State& s, std::span<const uint32_t> drawn, const pxpl5::PixelRect& window,
+                          std::vector<uint32_t>& items) {
+    w.soup.clear();
+    for (uint32_t j : drawn) w.soup.push_back(s.soupPolygons[j]);
+    const pxpl5::HemisphereFrame& f = w.renderer.render({glm::vec3(eye), glm::vec3(up), {}}, {s.soupVertices, w.soup}, window);
+    ++w.frames;
     items.resize(f.items.size(), pxpl5::kNoValue);
-    const size_t stride = static_cast<size_t>(f.stride);
+    stride = static_cast<size_t>(f.stride);
     for (int y = window.y0; y < window.y1; ++y)
       for (int x = window.x0; x < window.x1; ++x) {
         const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
         items[at] = f.items[at] == pxpl5::kNoValue ? pxpl5::kNoValue : drawn[f.items[at]];
       }
-    pxpl5::HemisphereFrame& out = e.frame[side];
-    out.factors.assign(f.factors.begin(), f.factors.end());
-    out.total = f.total;
-    out.items = items;
-    out.weights = f.weights;
-    out.width = f.width, out.height = f.height, out.stride = f.stride;
-    return &out;
+    for (pxpl5::HemisphereFrame& frame : w.frame)
+      frame.weights = f.weights, frame.width = f.width, frame.height = f.height, frame.stride = f.stride;
   };
-  const pxpl5::HemisphereFrame* frameBefore = render(before, cull.drawn, changed, 0);
-  pxpl5::HemisphereFrame& frameNow = *render(now, drawnNow, changed, 1);
+  // What pixel (x, y) of geometry s shows of element `behind` (or nothing) with `over` drawn too.
+  const auto shown = [&](const State& s, uint32_t behind, uint32_t over, int x, int y) {
+    if (over == pxpl5::kNoValue) return behind;
+    if (behind == pxpl5::kNoValue) return over;
+    const double u = (x + 0.5) * 2 / resolution - 1, v = (y + 0.5) * 2 / resolution - 1;
+    const glm::dvec3 direction = axes.x * u + axes.y * v + axes.z * std::sqrt(std::max(0.0, 1 - u * u - v * v));
+    const auto distance = [&](uint32_t j) {
+      return std::abs((s.offset[j] - glm::dot(s.normal[j], eye)) / glm::dot(s.normal[j], direction));
+    };
+    return distance(over) < distance(behind) ? over : behind;
+  };
+  std::vector<uint32_t>&itemsBefore = w.items[0], &itemsNow = w.items[1], &itemsGone = w.items[2];
+  render(old, gone, changedWindow, itemsGone);
+  render(now, came, changedWindow, itemsNow);
+  render(old, still, changedWindow, itemsBefore);
+  for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
+    for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
+      const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+      const uint32_t behind = itemsBefore[at];
+      itemsNow[at] = shown(now, behind == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[behind], itemsNow[at], x, y);
+      itemsBefore[at] = shown(old, behind, itemsGone[at], x, y);
+    }
 
   // Judged again: the changed elements, and the others whose pixels or targets differ.
-  const size_t stride = static_cast<size_t>(frameNow.stride);
-  const size_t changedWidth = static_cast<size_t>(changed.x1 - changed.x0);
-  e.differs.assign(static_cast<size_t>(pixelsOf(changed)), 0);
-  if (e.marked.size() < before.receiver.size()) e.marked.resize(before.receiver.size(), 0);
-  const uint32_t mark = ++e.correction;
-  for (int y = changed.y0; y < changed.y1; ++y)
-    for (int x = changed.x0; x < changed.x1; ++x) {
+  const size_t changedWidth = static_cast<size_t>(changedWindow.x1 - changedWindow.x0);
+  w.differs.assign(static_cast<size_t>(pixelsOf(changedWindow)), 0);
+  if (w.marked.size() < old.receiver.size()) w.marked.resize(old.receiver.size(), 0);
+  const uint32_t mark = ++w.correction;
+  for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
+    for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
       const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
-      const uint32_t b = e.items[0][at], n = e.items[1][at];
-      const bool changedB = b != pxpl5::kNoValue && e.changedBefore[b], changedN = n != pxpl5::kNoValue && e.changedNow[n];
-      const uint32_t bNow = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
-      if (!changedB && !changedN && bNow == n) continue;
-      e.differs[static_cast<size_t>(y - changed.y0) * changedWidth + static_cast<size_t>(x - changed.x0)] = 1;
-      if (b != pxpl5::kNoValue && !changedB) e.marked[b] = mark;
-      if (n != pxpl5::kNoValue && !changedN) e.marked[e.elementBefore[n]] = mark;
+      const uint32_t seenBefore = itemsBefore[at], seenNow = itemsNow[at];
+      const bool changedB = seenBefore != pxpl5::kNoValue && changedBefore[seenBefore];
+      const bool changedN = seenNow != pxpl5::kNoValue && changedNow[seenNow];
+      const uint32_t beforeNow = seenBefore == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[seenBefore];
+      if (!changedB && !changedN && beforeNow == seenNow) continue;
+      w.differs[static_cast<size_t>(y - changedWindow.y0) * changedWidth + static_cast<size_t>(x - changedWindow.x0)] = 1;
+      if (seenBefore != pxpl5::kNoValue && !changedB) w.marked[seenBefore] = mark;
+      if (seenNow != pxpl5::kNoValue && !changedN) w.marked[elementBefore[seenNow]] = mark;
     }
-  std::vector<uint32_t>&judgedBefore = e.judged[0], &judgedNow = e.judged[1];
+  std::vector<uint32_t>&judgedBefore = w.judged[0], &judgedNow = w.judged[1];
   judgedBefore.clear();
   judgedNow.clear();
   for (uint32_t j : cull.judged) {
-    if (e.changedBefore[j]) continue;
-    if (e.marked[j] != mark) {
+    if (changedBefore[j]) continue;
+    if (w.marked[j] != mark) {
       // Only near and small receivers read items at their targets; the others' factors are
       // counts, unchanged when none of their pixels is.
       if (!whole(j)) continue;
-      for (size_t k = 0; k < State::kTargets && e.marked[j] != mark; ++k) {
+      for (size_t k = 0; k < State::kTargets && w.marked[j] != mark; ++k) {
         int x = 0, y = 0;
-        if (!targetPixel(axes, eye, resolution, before.targets[State::kTargets * j + k], x, y)) continue;
-        if (x < changed.x0 || x >= changed.x1 || y < changed.y0 || y >= changed.y1) continue;
-        if (e.differs[static_cast<size_t>(y - changed.y0) * changedWidth + static_cast<size_t>(x - changed.x0)]) e.marked[j] = mark;
+        if (!targetPixel(axes, eye, resolution, old.targets[State::kTargets * j + k], x, y)) continue;
+        if (x < changedWindow.x0 || x >= changedWindow.x1 || y < changedWindow.y0 || y >= changedWindow.y1) continue;
+        if (w.differs[static_cast<size_t>(y - changedWindow.y0) * changedWidth + static_cast<size_t>(x - changedWindow.x0)])
+          w.marked[j] = mark;
       }
-      if (e.marked[j] != mark) continue;
+      if (w.marked[j] != mark) continue;
     }
     judgedBefore.push_back(j);
-    judgedNow.push_back(e.elementNow[j]);
+    judgedNow.push_back(elementNow[j]);
   }
-  for (uint32_t j : e.changed[0])
-    if (before.surfaceOf[j] != si) judgedBefore.push_back(j);
-  for (uint32_t i : e.changed[1])
+  for (uint32_t j : changed[0])
+    if (old.surfaceOf[j] != si) judgedBefore.push_back(j);
+  for (uint32_t i : changed[1])
     if (now.surfaceOf[i] != si) judgedNow.push_back(i);
   std::sort(judgedBefore.begin(), judgedBefore.end());
   std::sort(judgedNow.begin(), judgedNow.end());
@@ -1209,47 +1279,83 @@ bool Solver::correctInWindow(uint32_t p) {
   // Then before again in the window grown over the judged receivers whose judgement reads more
   // than their count in it (the changed ones lie within it): only those need to be whole. The
   // receivers seen there that are not judged, which the grown window would hold too, do not.
-  pxpl5::PixelRect grown = changed;
+  pxpl5::PixelRect grown = changedWindow;
   for (uint32_t j : judgedBefore)
-    if (!e.changedBefore[j] && whole(j)) grown = unite(grown, cull.rectOf(j));
-  if (!contains(changed, grown)) {
+    if (!changedBefore[j] && whole(j)) grown = unite(grown, cull.rectOf(j));
+  if (!contains(changedWindow, grown)) {
     cull.drawWithin(grown);
-    frameBefore = render(before, cull.drawn, grown, 0);
+    still.clear();
+    for (uint32_t j : cull.drawn)
+      if (!changedBefore[j]) still.push_back(j);
+    render(old, still, grown, itemsBefore);
+    for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
+      for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
+        const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+        itemsBefore[at] = shown(old, itemsBefore[at], itemsGone[at], x, y);
+      }
   }
-  if (e.pixelShare == 0) {
-    // Every disk pixel weighs the same: pxpl5's share, one over their number.
-    const auto disk = std::count_if(frameNow.weights.begin(), frameNow.weights.end(), [](float w) { return w > 0; });
-    e.pixelShare = 1.0 / static_cast<double>(disk);
-  }
-  {
-    std::vector<uint32_t>& items = e.items[1];
-    std::vector<uint32_t>& count = e.pixelCount;
-    if (count.size() < now.receiver.size()) count.resize(now.receiver.size(), 0);
-    e.counted.clear();
+  // Now outside the changed window, and both frames' factors: their pixels in the grown window.
+  for (int y = cull.window.y0; y < cull.window.y1; ++y)
+    for (int x = cull.window.x0; x < cull.window.x1; ++x) {
+      if (y >= changedWindow.y0 && y < changedWindow.y1 && x >= changedWindow.x0 && x < changedWindow.x1) continue;
+      const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
+      itemsNow[at] = itemsBefore[at] == pxpl5::kNoValue ? pxpl5::kNoValue : elementNow[itemsBefore[at]];
+    }
+  for (int side = 0; side < 2; ++side) {
+    std::vector<uint32_t>& count = w.pixelCount;
+    if (count.size() < std::max(old.receiver.size(), now.receiver.size()))
+      count.resize(std::max(old.receiver.size(), now.receiver.size()), 0);
+    w.counted.clear();
     for (int y = cull.window.y0; y < cull.window.y1; ++y)
       for (int x = cull.window.x0; x < cull.window.x1; ++x) {
         const size_t at = static_cast<size_t>(y) * stride + static_cast<size_t>(x);
-        if (y < changed.y0 || y >= changed.y1 || x < changed.x0 || x >= changed.x1) {
-          const uint32_t b = e.items[0][at];
-          items[at] = b == pxpl5::kNoValue ? pxpl5::kNoValue : e.elementNow[b];
-        }
-        if (const uint32_t i = items[at]; i != pxpl5::kNoValue && count[i]++ == 0) e.counted.push_back(i);
+        if (const uint32_t i = w.items[side][at]; i != pxpl5::kNoValue && count[i]++ == 0) w.counted.push_back(i);
       }
-    std::sort(e.counted.begin(), e.counted.end());
-    frameNow.factors.clear();
-    frameNow.total = 0;
-    for (uint32_t i : e.counted) {
-      frameNow.factors.push_back({i, static_cast<double>(std::exchange(count[i], 0)) * e.pixelShare});
-      frameNow.total += frameNow.factors.back().factor;
+    std::sort(w.counted.begin(), w.counted.end());
+    pxpl5::HemisphereFrame& frame = w.frame[side];
+    frame.items = w.items[side];
+    frame.factors.clear();
+    frame.total = 0;
+    for (uint32_t i : w.counted) {
+      frame.factors.push_back({i, static_cast<double>(std::exchange(count[i], 0)) * w.pixelShare});
+      frame.total += frame.factors.back().factor;
     }
   }
 
-  // The centre's share of backs changes by the window's: it must still be kept now.
-  const double centreBacks = before.pointBackShare[p] - before.backShare(*frameBefore, eye) + now.backShare(frameNow, eye);
+  // The point's share of backs changes by the window's (it must still be kept now: the caller).
+  w.pointBacks = old.pointBackShare[p] - old.backShare(w.frame[0], eye) + now.backShare(w.frame[1], eye);
+  w.windowable = true;
+}
+
+Solver::Edit::Window& Solver::Edit::windowOf(State& now, uint32_t p) {
+  if (nextPrepared && windows[1]->patch == p) {
+    nextPrepared = false;
+    return *windows[1];
+  }
+  const int resolution = before->settings.resolution;
+  for (std::unique_ptr<Window>& w : windows)
+    if (!w) w = std::make_unique<Window>(resolution);
+  nextPrepared = !pending.empty();
+  const uint32_t next = nextPrepared ? pending.back().patch : kNone;
+  now.renderer.runOnGraphicsProcessors(nextPrepared ? 2 : 1,
+                                       [&](size_t k, int) { findWindow(now, k == 0 ? p : next, *windows[k]); });
+  return *windows[0];
+}
+
+bool Solver::correctInWindow(uint32_t p) {
+  Edit& e = *edit_;
+  State &before = *e.before, &now = *state_;
+  if (!before.settings.windowedCorrections) return false;
+  const Edit::Window& w = e.windowOf(now, p);
+  now.stats.frames += w.frames;
+  if (!w.windowable) return false;
+  const uint32_t q = w.now;
   if (!now.pointChosen[q]) {
-    if (centreBacks > kMostBacks) return false;
+    if (w.pointBacks > kMostBacks) return false;
     now.pointChosen[q] = 1;
-    now.pointBackShare[q] = centreBacks;
+    now.pointBackShare[q] = w.pointBacks;
+    now.patchCentre[q] = before.patchCentre[p];
+    now.patchRadius[q] = before.patchRadius[p];
   }
 
   // Their factors before and now, from the same elements lit alike.
@@ -1263,8 +1369,8 @@ bool Solver::correctInWindow(uint32_t p) {
   }
   // The scales of p's last whole frame, for both: the window changes them by the change of its
   // judged receivers' corrections only.
-  before.listedFactors(p, *frameBefore, judgedBefore, before.patchScale[p], e.factors[0]);
-  now.listedFactors(q, frameNow, judgedNow, before.patchScale[p], e.factors[1]);
+  before.listedFactors(p, w.frame[0], w.judged[0], before.patchScale[p], e.factors[0]);
+  now.listedFactors(q, w.frame[1], w.judged[1], before.patchScale[p], e.factors[1]);
   now.patchScale[q] = before.patchScale[p];
 
   // Now less before; what fell on removed elements comes off their ledger.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace radiosity {
 
@@ -56,6 +57,35 @@ bool contains(const pxpl5::PixelRect& outer, const pxpl5::PixelRect& inner) {
 
 bool overlaps(const pxpl5::PixelRect& a, const pxpl5::PixelRect& b) {
   return !a.empty() && !b.empty() && a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+std::vector<Sphere> sphereClusters(std::span<const glm::dvec3> centre, std::span<const double> radius,
+                                   std::span<uint32_t> elements, size_t maxElements) {
+  std::vector<Sphere> out;
+  std::vector<std::span<uint32_t>> todo{elements};
+  while (!todo.empty()) {
+    const std::span<uint32_t> group = todo.back();
+    todo.pop_back();
+    if (group.empty()) continue;
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (uint32_t j : group) lo = glm::min(lo, centre[j] - radius[j]), hi = glm::max(hi, centre[j] + radius[j]);
+    if (group.size() <= std::max<size_t>(maxElements, 1)) {
+      Sphere c{0.5 * (lo + hi), 0};
+      for (uint32_t j : group) c.radius = std::max(c.radius, glm::length(centre[j] - c.centre) + radius[j]);
+      out.push_back(c);
+      continue;
+    }
+    const glm::dvec3 size = hi - lo;
+    const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+    const auto half = group.begin() + static_cast<std::ptrdiff_t>(group.size() / 2);
+    // Ties by index, so that the split does not depend on the sort's order.
+    std::nth_element(group.begin(), half, group.end(), [&](uint32_t a, uint32_t b) {
+      return centre[a][axis] < centre[b][axis] || (centre[a][axis] == centre[b][axis] && a < b);
+    });
+    todo.push_back(group.first(group.size() / 2));
+    todo.push_back(group.subspan(group.size() / 2));
+  }
+  return out;
 }
 
 const pxpl5::PixelRect& WindowCull::rectOf(uint32_t j) {

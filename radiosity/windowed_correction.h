@@ -37,6 +37,19 @@ inline int64_t pixelsOf(const pxpl5::PixelRect& r) {
   return r.empty() ? 0 : int64_t{r.x1 - r.x0} * int64_t{r.y1 - r.y0};
 }
 
+struct Sphere {
+  glm::dvec3 centre{0};
+  double radius = 0;
+};
+
+// Spheres around groups of `elements` (spheres given by `centre` and `radius`, indexed by
+// element), the group split at the median of its box's longest side until each holds at most
+// `maxElements`. A flat region seen at a slant fills much less of a hemisphere than one sphere
+// around it: the windows of the parts are tighter. Deterministic; the order of `elements` is
+// changed.
+std::vector<Sphere> sphereClusters(std::span<const glm::dvec3> centre, std::span<const double> radius,
+                                   std::span<uint32_t> elements, size_t maxElements);
+
 // The elements and their patches as spheres (the scene of one geometry); patch p's elements are
 // patchElements[patchFirst[p], patchLast[p]), and its sphere holds them all.
 struct SceneSpheres {

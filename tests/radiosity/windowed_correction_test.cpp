@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -58,6 +59,33 @@ TEST(RadiosityWindow, ASpheresWindowHoldsThePixelsOfWhatIsInside) {
   EXPECT_GT(drawn, 10000);
   EXPECT_GT(empty, 0);  // some spheres below the horizon
   EXPECT_GT(whole, 0);  // some holding the eye
+}
+
+// Clusters of a flat strip of elements: every element inside one of the spheres, at most the
+// given number of elements to a sphere, and the spheres much smaller than one around them all.
+TEST(RadiosityWindow, SphereClustersHoldTheirElementsInSmallGroups) {
+  std::vector<glm::dvec3> centre;
+  std::vector<double> radius;
+  for (int i = 0; i < 40; ++i)
+    for (int k = 0; k < 10; ++k) centre.emplace_back(0.1 * i, 0, 0.1 * k), radius.push_back(0.071);
+  std::vector<uint32_t> elements(centre.size());
+  for (uint32_t j = 0; j < elements.size(); ++j) elements[j] = j;
+  std::vector<uint32_t> shuffled = elements;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(3));
+  const std::vector<Sphere> spheres = sphereClusters(centre, radius, elements, 32);
+  const std::vector<Sphere> again = sphereClusters(centre, radius, shuffled, 32);
+  ASSERT_EQ(spheres.size(), again.size());
+  EXPECT_GE(spheres.size(), elements.size() / 32);
+  EXPECT_LE(spheres.size(), 2 * elements.size() / 32 + 1);
+  for (size_t c = 0; c < spheres.size(); ++c) {
+    EXPECT_EQ(spheres[c].centre, again[c].centre);
+    EXPECT_EQ(spheres[c].radius, again[c].radius);
+    EXPECT_LT(spheres[c].radius, 0.5);  // one around all of them: over 2
+  }
+  for (uint32_t j = 0; j < centre.size(); ++j)
+    EXPECT_TRUE(std::any_of(spheres.begin(), spheres.end(), [&](const Sphere& s) {
+      return glm::length(centre[j] - s.centre) + radius[j] <= s.radius * (1 + 1e-12);
+    })) << "element " << j;
 }
 
 TEST(RadiosityWindow, UniteAndOverlap) {
