@@ -1,27 +1,8 @@
 #include "pxpl5/worker_pool.h"
 
-#include <chrono>
 #include <utility>
 
 namespace pxpl5 {
-
-namespace {
-
-// Runs come back to back (a solver's shot is a few of them, tens of microseconds apart) and
-// waking a sleeping thread takes 20 to 50 us: a thread that is to wait looks for a while first.
-constexpr auto kSpin = std::chrono::microseconds(200);
-
-template <typename Ready>
-void spinUntil(const Ready& ready) {
-  const auto end = std::chrono::steady_clock::now() + kSpin;
-  while (!ready() && std::chrono::steady_clock::now() < end) {
-#if defined(__x86_64__) || defined(__i386__)
-    __builtin_ia32_pause();  // spares the other hyperthread and the memory bus
-#endif
-  }
-}
-
-}  // namespace
 
 WorkerPool::WorkerPool(int workers) {
   for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { work(w); });
@@ -53,7 +34,6 @@ void WorkerPool::drain(int worker) {
 void WorkerPool::work(int worker) {
   uint64_t seen = 0;
   for (;;) {
-    spinUntil([&] { return generation_.load(std::memory_order_relaxed) != seen; });
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
@@ -82,7 +62,6 @@ void WorkerPool::run(size_t taskCount, const std::function<void(size_t, int)>& j
   }
   wake_.notify_all();
   drain(0);
-  spinUntil([&] { return busy_.load(std::memory_order_relaxed) == 0; });
   std::unique_lock lock(mutex_);
   done_.wait(lock, [&] { return busy_ == 0; });
   if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));

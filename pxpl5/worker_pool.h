@@ -1,6 +1,5 @@
 // The graphics-processor and renderer threads of a Machine: created once with it, woken for each
-// phase of a frame (after a run they look for the next one for up to 200 us before they sleep).
-// The calling thread works as worker 0, so one worker means no extra thread.
+// phase of a frame. The calling thread works as worker 0, so one worker means no extra thread.
 #pragma once
 
 #include <atomic>
@@ -35,9 +34,8 @@ class WorkerPool {
   std::vector<std::thread> threads_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
-  // Changed under mutex_, also read without it by threads spinning before they sleep.
-  std::atomic<uint64_t> generation_{0};  // bumped per run; workers wait for a new one
-  std::atomic<int> busy_{0};             // helper threads still inside the current run
+  uint64_t generation_ = 0;  // bumped per run; workers wait for a new one
+  int busy_ = 0;             // helper threads still inside the current run
   bool stop_ = false;
   const std::function<void(size_t, int)>* job_ = nullptr;
   size_t taskCount_ = 0;
