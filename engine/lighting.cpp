@@ -1,5 +1,7 @@
 #include "engine/lighting.h"
 
+#include <glm/common.hpp>
+
 #include <chrono>
 
 namespace engine {
@@ -7,8 +9,10 @@ namespace engine {
 void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out) {
   out.clear();
   const glm::dvec3 ambient = solver.ambient();
+  // Light shot back by corrections (and overshooting) can leave residue a hair below zero,
+  // within the unshot tolerance: shown, there is no light there.
   for (uint32_t s = 0; s < solver.surfaceCount(); ++s)
-    for (const glm::dvec3& radiance : solver.vertexRadiance(s, ambient)) out.emplace_back(radiance);
+    for (const glm::dvec3& radiance : solver.vertexRadiance(s, ambient)) out.emplace_back(glm::max(radiance, glm::dvec3(0)));
 }
 
 uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
