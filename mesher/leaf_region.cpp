@@ -276,7 +276,6 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
   std::vector<RegionPoint>& out = handed_;
   out.clear();
   size_t pathKept = 0;
-  bool mPrimeGiven = false;
   for (size_t i = 0; i < n; ++i) {
     const size_t k = i == at[0] && handovers[0] ? 0 : i == at[1] && handovers[1] ? 1 : 2;
     if (k == 2) {
@@ -290,7 +289,7 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
     if (h.giver == q) {
       // The giver keeps what is left of its wedge: it runs V -> M (V is its next path point
       // already), or from M' on.
-      if (h.vertex < 0) out.push_back(end), ++pathKept, mPrimeGiven = true;
+      if (h.vertex < 0) out.push_back(end), ++pathKept;
       continue;
     }
     // M -> M' (or V) joins the taker's ring where Q was: after M, or (entering) before it.
@@ -320,7 +319,7 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
   // A giver left with points on the line through M -> M' alone has nothing left.
   bool flat = false;
   for (const std::optional<WedgeHandover>& h : handovers)
-    if (mPrimeGiven && h && h->giver == q && h->vertex < 0) {
+    if (h && h->giver == q && h->vertex < 0) {
       const bool acrossX = h->m.x == h->mPrime.x;
       flat = flat || std::all_of(ring.begin(), ring.end(), [&](const RegionPoint& p) { return acrossX ? p.at.x == h->m.x : p.at.y == h->m.y; });
     }
