@@ -275,6 +275,7 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
   region.handedOver = true;
   std::vector<RegionPoint>& out = handed_;
   out.clear();
+  closing_.clear();  // an entering taker's points after M, the ring's last point
   size_t pathKept = 0;
   for (size_t i = 0; i < n; ++i) {
     const size_t k = i == at[0] && handovers[0] ? 0 : i == at[1] && handovers[1] ? 1 : 2;
@@ -293,18 +294,17 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
       continue;
     }
     // M -> M' (or V) joins the taker's ring where Q was: after M, or (entering) before it.
-    between_.clear();
-    pointsBetween(tree_, h, between_);
     out.push_back(end);
     ++pathKept;
     if (k == 0) {
-      for (const Vec2& p : between_) ring.push_back({p});  // after M, the last point
+      pointsBetween(tree_, h, closing_);
     } else {
+      between_.clear();
+      pointsBetween(tree_, h, between_);
       for (auto p = between_.rbegin(); p != between_.rend(); ++p) out.push_back({*p});
     }
   }
-  // Points the entry's chain added at the end of the old ring.
-  for (size_t i = n; i < ring.size(); ++i) out.push_back(ring[i]);
+  for (const Vec2& p : closing_) out.push_back({p});
   // M' where the edge leaves the giver repeats that crossing.
   ring.clear();
   for (size_t i = 0; i < out.size(); ++i) {

@@ -65,7 +65,7 @@ class LeafRegionBuilder {
   const TreeFrame& frame_;
   LeafRegion region_;
   std::vector<RegionPoint> onBorder_, path_, ring_, handed_;
-  std::vector<Vec2> between_;
+  std::vector<Vec2> between_, closing_;
   std::vector<int32_t>* coarseTakers_ = nullptr;
   std::vector<int32_t> across_;
   std::vector<std::pair<double, RegionPoint>> walk_;
