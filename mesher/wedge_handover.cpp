@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace mesher {
@@ -17,10 +18,10 @@ struct WedgeSide {
   int side = 0, along = 0;
 };
 
-// The wedge at a crossing of edge a -> b (inside on its left) with a vertical (x = const) or
-// horizontal line, when the edge meets the line at less than the bound in the plane.
 const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
 
+// The wedge at a crossing of edge a -> b (inside on its left) with a vertical (x = const) or
+// horizontal line, when the edge meets the line at less than the bound in the plane.
 std::optional<WedgeSide> shallowWedge(Vec2 a, Vec2 b, bool vertical, Vec2 planePerTree) {
   const int alongAxis = vertical ? 1 : 0, acrossAxis = 1 - alongAxis;
   const Vec2 d = b - a, plane = d * planePerTree;
@@ -120,14 +121,13 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
       return handover;
     }
   }
-  // M' lies on the giver's square, computed as the giver computes a crossing of that line.
-  const double s = static_cast<double>(tree.edgeLength(giver));
+  // M' lies on the giver's square, computed as the giver computes a crossing of that line (its
+  // clamp to the square then changes nothing).
   const double lo = static_cast<double>(acrossAxis == 0 ? giver.x : giver.y);
-  const double line = m[alongAxis];
-  const double exact = a[acrossAxis] + (line - a[alongAxis]) * (b[acrossAxis] - a[acrossAxis]) / (b[alongAxis] - a[alongAxis]);
-  if (exact < lo || exact > lo + s) return {};
-  handover.mPrime = crossingOnLine(a, b, !vertical, line, lo, lo + s, tree.gridSnap);
-  if (handover.mPrime == m) return {};
+  const double hi = lo + static_cast<double>(tree.edgeLength(giver));
+  const double unbounded = std::numeric_limits<double>::infinity();
+  handover.mPrime = crossingOnLine(a, b, !vertical, m[alongAxis], -unbounded, unbounded, tree.gridSnap);
+  if (handover.mPrime[acrossAxis] < lo || handover.mPrime[acrossAxis] > hi || handover.mPrime == m) return {};
   // The taker's elements along M -> M' meet the leaves across the giver's side there: those
   // must be at most one level finer than the taker, as balance keeps side neighbours.
   bool graded = true;
