@@ -225,6 +225,13 @@ struct Solver::State {
   void setUpPatch(uint32_t p, uint32_t first, uint32_t last);
   const pxpl5::HemisphereFrame& frameFrom(uint32_t p, const glm::dvec3& point);
   const pxpl5::HemisphereFrame* choosePoint(uint32_t p);
+  // Takes a point already checked (by an earlier state, or a correction's frame) as patch p's.
+  void adoptPoint(uint32_t p, const glm::dvec3& point, double pointRadius, double backs) {
+    pointChosen[p] = 1;
+    patchCentre[p] = point;
+    patchRadius[p] = pointRadius;
+    pointBackShare[p] = backs;
+  }
   void split(uint32_t p);
   void shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen);
   // Sends radiance dB from patch p along this geometry's form factors, its elements weighted by
@@ -1006,10 +1013,7 @@ void Solver::edit(std::span<const Surface> surfaces) {
     if (!old.pointChosen[p]) continue;
     const uint32_t q = edit->samePatch(old, n, p);
     if (q == kNone) continue;
-    n.pointChosen[q] = 1;
-    n.patchCentre[q] = old.patchCentre[p];
-    n.patchRadius[q] = old.patchRadius[p];
-    n.pointBackShare[q] = old.pointBackShare[p];
+    n.adoptPoint(q, old.patchCentre[p], old.patchRadius[p], old.pointBackShare[p]);
     n.patchScale[q] = old.patchScale[p];
   }
   // The new patches' unshot and shot light from their elements.
@@ -1089,10 +1093,8 @@ bool Solver::correct() {
       same != kNone && !now.pointChosen[same] && before.pointChosen[p] && now.patchCentre[same] != before.patchCentre[p]) {
     const glm::dvec3 point = before.patchCentre[p];
     const pxpl5::HemisphereFrame& frame = now.frameFrom(same, point);
-    if (now.backShare(frame, point) <= kMostBacks) {
-      now.pointChosen[same] = 1;
-      now.patchCentre[same] = point;
-      now.patchRadius[same] = before.patchRadius[p];
+    if (const double backs = now.backShare(frame, point); backs <= kMostBacks) {
+      now.adoptPoint(same, point, before.patchRadius[p], backs);
       lastFrame = &frame, lastChosen = same;
     }
   }
@@ -1352,10 +1354,7 @@ bool Solver::correctInWindow(uint32_t p) {
   const uint32_t q = w.now;
   if (!now.pointChosen[q]) {
     if (w.pointBacks > kMostBacks) return false;
-    now.pointChosen[q] = 1;
-    now.pointBackShare[q] = w.pointBacks;
-    now.patchCentre[q] = before.patchCentre[p];
-    now.patchRadius[q] = before.patchRadius[p];
+    now.adoptPoint(q, before.patchCentre[p], before.patchRadius[p], w.pointBacks);
   }
 
   // Their factors before and now, from the same elements lit alike.
