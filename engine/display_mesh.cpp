@@ -117,7 +117,7 @@ double autoExposure(const DisplayMesh& mesh, double key) {
   double logSum = 0, areaSum = 0;
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     const double a = mesh.area[i];
-    logSum += a * std::log(1e-4 + std::max(0.0, static_cast<double>(luminance(mesh.radiance[i]))));
+    logSum += a * std::log(1e-4 + luminance(mesh.radiance[i]));
     areaSum += a;
   }
   if (areaSum <= 0) return 1;

@@ -97,6 +97,11 @@ TEST(EditPath, TheDisplayAfterAMoveHasNoNegativeLight) {
   editor.setPose(chair, pose);
   applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
   solver->solve(0.01);
+  // The case this is about: the solution itself holds such residue.
+  bool belowZero = false;
+  for (uint32_t s = 0; s < solver->surfaceCount(); ++s)
+    for (const glm::dvec3& r : solver->vertexRadiance(s, solver->ambient())) belowZero = belowZero || r.x < 0 || r.y < 0 || r.z < 0;
+  ASSERT_TRUE(belowZero);
   DisplayMesh mesh = displayMesh(editor.meshed());
   displayRadiance(*solver, mesh.radiance);
   for (const glm::vec3& r : mesh.radiance) ASSERT_TRUE(r.x >= 0 && r.y >= 0 && r.z >= 0) << r.x << " " << r.y << " " << r.z;
