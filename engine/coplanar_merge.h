@@ -13,7 +13,8 @@
 // touches itself (two holes meeting at a corner, say), the pieces at the touching corners are
 // split off as surfaces of their own and the rest is tried again, so every surface is a polygon
 // the mesher accepts. A group with more than 256 holes stays as its pieces. A piece on its own
-// keeps its rings, with the vertices splitting its edges added.
+// keeps its rings, with the vertices splitting its edges added (only its own corners where
+// those would make its ring touch itself).
 #pragma once
 
 #include "engine/scene.h"

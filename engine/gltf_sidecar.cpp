@@ -7,11 +7,6 @@
 
 namespace engine {
 
-namespace {
-
-
-}  // namespace
-
 std::string sidecarPathFor(const std::string& model) {
   std::filesystem::path path(model);
   path.replace_extension(".walkrad.json");

@@ -17,14 +17,14 @@ struct SurfaceMesh {
   std::vector<Vec3> positions;       // per mesh vertex, world; the surface's own points exact
 };
 
-// Plane coordinates are two world axes when the surface faces along one (exact coordinates,
-// axis-aligned edges stay axis-aligned), else axes along its longest outer edge.
-// The second form meshes with `mesher`, whose memory carries over from surface to surface.
 // The in-plane axes (u, v), counter-clockwise about `normal`, of a plane whose normal is a
 // world axis: world axes themselves, so coordinates laid down in it stay exact. Nothing for
 // other normals.
 std::optional<std::pair<Vec3, Vec3>> axisPlaneAxes(const Vec3& normal);
 
+// Plane coordinates are two world axes when the surface faces along one (exact coordinates,
+// axis-aligned edges stay axis-aligned), else axes along its longest outer edge.
+// The second form meshes with `mesher`, whose memory carries over from surface to surface.
 SurfaceMesh meshSurface(const Surface& surface);
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher);
 

@@ -103,7 +103,7 @@ double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal, const P
     v = clipped;
     if (m < 3) return 0;
   }
-  const double sum = m <= 4 ? contourSum(v, m, normal) : contourSumReference(v, m, normal);
+  const double sum = contourSum(v, m, normal);
   return std::abs(sum) / (2 * std::numbers::pi);
 }
 

@@ -235,8 +235,9 @@ struct Solver::State {
   void split(uint32_t p);
   void shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen);
   // Sends radiance dB from patch p along this geometry's form factors, its elements weighted by
-  // `shares` (lit into its tree), from `chosen` or a new frame at its centre: deposit(j, front,
-  // back) per receiver (factors per channel); returns the share that escaped, per channel.
+  // `shares` (lit into its tree), from its kept shot, `chosen` or a new frame at its centre:
+  // deposit(j, front, back) per receiver (factors per channel); returns the share that escaped,
+  // per channel.
   template <typename Deposit>
   glm::dvec3 distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit);
   // Radiance dB sent from `sourceArea` reaching element j with these factors: the reflected part
