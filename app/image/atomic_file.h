@@ -12,8 +12,9 @@ namespace app {
 // replaced (the link stays); a device or pipe is written in place, since it cannot be replaced.
 void writeFileAtomically(const std::string& path, std::string_view bytes);
 
-// Throws as writeFileAtomically would when `path` cannot become a file: its folder is missing or
-// not writable, or the path names a folder. A long computation can then fail before it starts
+// Throws as writeFileAtomically would when `path` cannot become a file: its folder (a symbolic
+// link's target's) is missing or not writable, the path names a folder, or it is a device or
+// pipe that cannot be written. A long computation can then fail before it starts
 // rather than after. Creates nothing.
 void checkCanWrite(const std::string& path);
 

@@ -76,6 +76,15 @@ TEST(ImageIo, ALinkOrAPipeIsWrittenThroughNotReplaced) {
   writeFileAtomically((dir / "link.txt").string(), "new");
   EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.txt"));
   EXPECT_EQ(readAll((dir / "target.txt").string()), "new");
+  // A link to a file not there yet stays a link, and the file appears where it points.
+  std::filesystem::create_symlink("later.txt", dir / "ahead.txt");
+  checkCanWrite((dir / "ahead.txt").string());
+  writeFileAtomically((dir / "ahead.txt").string(), "made");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "ahead.txt"));
+  EXPECT_EQ(readAll((dir / "later.txt").string()), "made");
+  // One pointing into a folder that is not there cannot be written: that is known up front.
+  std::filesystem::create_symlink("no-such-folder/x.txt", dir / "nowhere.txt");
+  EXPECT_THROW(checkCanWrite((dir / "nowhere.txt").string()), std::runtime_error);
 
   const std::string pipe = (dir / "pipe").string();
   ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
