@@ -214,7 +214,10 @@ struct Solver::State {
   const KeptShot* keptShot(uint32_t p) const {
     return p < keptShots.size() && pointChosen[p] && !keptShots[p].chunkStart.empty() ? &keptShots[p] : nullptr;
   }
-  void keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame);
+  // The record for keeping patch p's first shot, sized, when it is to be kept (its point is
+  // chosen, it has none yet, the budget allows); keepShot fills and stores it.
+  std::optional<KeptShot> shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const;
+  void keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, KeptShot& record);
   double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
   std::span<uint32_t> elementsOf(uint32_t p) {
     return {patchElements.data() + patchFirst[p], patchLast[p] - patchFirst[p]};
@@ -554,9 +557,8 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
   out.replacedNew = replacedNew;
 }
 
-void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame) {
-  if (!pointChosen[p] || (p < keptShots.size() && !keptShots[p].chunkStart.empty())) return;
-  // Sized before anything is copied: once the budget is spent most shots are not kept.
+std::optional<Solver::State::KeptShot> Solver::State::shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const {
+  if (!pointChosen[p] || (p < keptShots.size() && !keptShots[p].chunkStart.empty())) return {};
   KeptShot record;
   record.chunkStart.push_back({});
   for (const ReceiverChunk& chunk : chunks) {
@@ -567,8 +569,12 @@ void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame) {
     next.factors += static_cast<uint32_t>(chunk.plans.factors.size());
     record.chunkStart.push_back(next);
   }
+  if (keptBytes + KeptShot::bytesFor(frame.factors.size(), record.chunkStart.back()) > settings.shotCacheBytes) return {};
+  return record;
+}
+
+void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, KeptShot& record) {
   const KeptShot::ChunkStart& end = record.chunkStart.back();
-  if (keptBytes + KeptShot::bytesFor(frame.factors.size(), end) > settings.shotCacheBytes) return;
   record.factors.assign(frame.factors.begin(), frame.factors.end());
   record.total = frame.total;
   record.judged.reserve(end.judged);
@@ -751,15 +757,17 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
         deposit(f.element, f.front * newScale, f.back * newScale);
       }
   };
-  // A first shot is kept meanwhile, on another graphics processor when there is one: both only
-  // read the frame and the chunks, and they write apart. Keeping is task 0, which the calling
-  // thread takes at once: it is the longer (fresh pages to fill), so the deposit can wait the
-  // tens of microseconds a worker takes to wake.
-  if (before) {
+  // A first shot that is to be kept is kept meanwhile, on another graphics processor when there
+  // is one: both only read the frame and the chunks, and they write apart. Keeping is task 0,
+  // which the calling thread takes at once: it is the longer (fresh pages to fill), so the
+  // deposit can wait the tens of microseconds a worker takes to wake. Other shots (kept
+  // already, or past the budget) pay no hand-over.
+  std::optional<KeptShot> toKeep = before ? std::nullopt : shotToKeep(p, *frame);
+  if (!toKeep) {
     depositAll();
   } else {
     renderer.runOnGraphicsProcessors(2, [&](size_t task, int) {
-      if (task == 0) keepShot(p, *frame);
+      if (task == 0) keepShot(p, *frame, *toKeep);
       else depositAll();
     });
   }
