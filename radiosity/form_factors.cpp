@@ -9,12 +9,14 @@
 #include <numbers>
 
 // AVX2 intrinsics where GCC or Clang builds for x86-64, used when the CPU has AVX2 (asked at run
-// time: the build's baseline lacks it); the plain scalar loops elsewhere.
+// time: the build's baseline lacks it); the plain scalar loops elsewhere. Intrinsics rather than
+// GCC's vector types (as pxpl5 uses): these paths must repeat the scalar reference's operations
+// one for one, unfused, to give its bits.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define WALKRAD_CONTOUR_AVX2 1
+#define WALKRAD_FORM_FACTOR_AVX2 1
 #include <immintrin.h>
 #else
-#define WALKRAD_CONTOUR_AVX2 0
+#define WALKRAD_FORM_FACTOR_AVX2 0
 #endif
 
 namespace radiosity {
@@ -125,9 +127,17 @@ double contourSumReference(const glm::dvec3* v, int m, const glm::dvec3& normal)
 
 namespace {
 
+#if WALKRAD_FORM_FACTOR_AVX2
+// Asked once: the contour sums and Gauss rules take their AVX2 paths only on CPUs that have it.
+bool hasAvx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
+}
+#endif
+
 // The edges of a triangle or quad in the four lanes of AVX2, every operation the reference's, in
 // its order and unfused, so the sum has the same bits: the runs use either interchangeably.
-#if WALKRAD_CONTOUR_AVX2
+#if WALKRAD_FORM_FACTOR_AVX2
 [[gnu::target("avx2")]] double contourSumAvx2(const glm::dvec3* v, int m, const glm::dvec3& normal) {
   // Lane k holds edge k, from corner a = v[k] to b = v[k + 1]; a triangle's fourth lane is empty
   // (a = b = 0), whose s == 0 drops it as the reference does.
@@ -154,10 +164,9 @@ namespace {
   const __m256d steep = _mm256_cmp_pd(s, absX, _CMP_GT_OQ);
   const __m256d z = _mm256_div_pd(_mm256_blendv_pd(s, absX, steep), _mm256_blendv_pd(absX, s, steep));
   const __m256d z2 = _mm256_mul_pd(z, z);
-  static constexpr double kAtan[] = {-0.3333314528, 0.1999355085, -0.1420889944, 0.1065626393,
-                                     -0.0752896400, 0.0429096138, -0.0161657367, 0.0028662257};
-  __m256d inner = _mm256_mul_pd(z2, _mm256_set1_pd(kAtan[7]));
-  for (int k = 6; k >= 0; --k) inner = _mm256_mul_pd(z2, _mm256_add_pd(_mm256_set1_pd(kAtan[k]), inner));
+  const double* c = mesher::kFastAtanCoefficients;
+  __m256d inner = _mm256_mul_pd(z2, _mm256_set1_pd(c[7]));
+  for (int k = 6; k >= 0; --k) inner = _mm256_mul_pd(z2, _mm256_add_pd(_mm256_set1_pd(c[k]), inner));
   const __m256d atanZ = _mm256_mul_pd(z, _mm256_add_pd(_mm256_set1_pd(1.0), inner));
   const __m256d angle = _mm256_blendv_pd(atanZ, _mm256_sub_pd(_mm256_set1_pd(std::numbers::pi / 2), atanZ), steep);
   const __m256d atan2 = _mm256_blendv_pd(angle, _mm256_sub_pd(_mm256_set1_pd(std::numbers::pi), angle),
@@ -176,9 +185,8 @@ namespace {
 }  // namespace
 
 double contourSum(const glm::dvec3* v, int m, const glm::dvec3& normal) {
-#if WALKRAD_CONTOUR_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2 && (m == 3 || m == 4)) return contourSumAvx2(v, m, normal);
+#if WALKRAD_FORM_FACTOR_AVX2
+  if (hasAvx2() && (m == 3 || m == 4)) return contourSumAvx2(v, m, normal);
 #endif
   return contourSumReference(v, m, normal);
 }
@@ -245,7 +253,7 @@ double gaussSumReference(const glm::dvec3& point, const glm::dvec3& normal, cons
 
 namespace {
 
-#if WALKRAD_CONTOUR_AVX2
+#if WALKRAD_FORM_FACTOR_AVX2
 // The reference's operations in its order, unfused, a Gauss point per lane; a triangle's empty
 // fourth lane is dropped as the reference never visits it.
 [[gnu::target("avx2")]] double gaussSumAvx2(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
@@ -274,9 +282,8 @@ namespace {
 }  // namespace
 
 double gaussSum(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
-#if WALKRAD_CONTOUR_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return gaussSumAvx2(point, normal, r);
+#if WALKRAD_FORM_FACTOR_AVX2
+  if (hasAvx2()) return gaussSumAvx2(point, normal, r);
 #endif
   return gaussSumReference(point, normal, r);
 }
