@@ -1,7 +1,9 @@
 // atan2 for hot loops that choose by angles or sum many of them: the polynomial of Abramowitz and
 // Stegun 4.4.49, error below 2e-8 radians, several times faster than libm's. The mesher's choice
-// of fans and the radiosity solver's contour integrals use it.
+// of pieces and the radiosity solver's contour integrals use it.
 #pragma once
+
+#include <glm/vec2.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -24,6 +26,12 @@ inline double fastAtan2(double y, double x) {
   const double atanZ = z * (1 + inner);
   const double a = steep ? std::numbers::pi / 2 - atanZ : atanZ;
   return x < 0 ? std::numbers::pi - a : a;
+}
+
+// The angle at `at` between the directions to `prev` and `next`, in degrees.
+inline double cornerAngleDeg(glm::dvec2 prev, glm::dvec2 at, glm::dvec2 next) {
+  const glm::dvec2 u = prev - at, v = next - at;
+  return fastAtan2(std::abs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y) * (180 / std::numbers::pi);
 }
 
 }  // namespace mesher

@@ -9,6 +9,14 @@
 
 namespace mesher {
 
+namespace {
+
+// Ends a ring's ids (LeafEmitter::ringIds) with its open sides' bits: no vertex id gets this
+// large.
+constexpr uint32_t kOpenSidesMark = 0xfffffff0u;
+
+}  // namespace
+
 // Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
 // alike (corners are integers, crossings come from the edge and the line alone). Open addressing
 // over entries (point and id) kept in the order they were listed, so a quarter of a million
@@ -259,6 +267,9 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
     ring_.push_back(p.at);
   }
   if (inOrder_ && leaf.status != QuadStatus::Outside) recordEastAndNorth(q);
+  // Points may be added along open sides (RingBoundary::openSides): a ring whose sides open or
+  // close as a neighbour turns inside or out is not the same ring.
+  if (region.templateKey < 0 && region.boundary.openSides != 0) ringIds_.push_back(kOpenSidesMark | static_cast<uint32_t>(region.boundary.openSides));
   return region;
 }
 
@@ -286,7 +297,7 @@ void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::v
     elements = &templates_[key];
   } else {
     pieces_.clear();
-    subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_, leaf.pathPoints);
+    subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_, &leaf.boundary);
   }
   // Ring points have their ids; the inner point and points added on the boundary are this
   // leaf's own (a template's indices are the ring's, then the inner point).

@@ -32,8 +32,9 @@ class LeafEmitter {
   // construction or reset(): the same elements and vertices, found mostly without the point
   // table (see inOrder_). The emitter is then fit for emit() again.
   void emitAll(std::vector<std::array<uint32_t, 4>>& out);
-  // The vertex ids around leaf q's region, as emit() would use them: equal rings give equal
-  // elements. lastRingIds() is the ring of the last emit() or ringIds() call.
+  // The vertex ids around leaf q's region, as emit() would use them, then one more word when
+  // some side of a meshed (not templated) ring is open (RingBoundary::openSides): equal rings give
+  // equal elements. lastRingIds() is the ring of the last emit() or ringIds() call.
   const std::vector<uint32_t>& ringIds(int32_t q);
   const std::vector<uint32_t>& lastRingIds() const { return ringIds_; }
 

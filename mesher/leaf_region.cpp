@@ -72,6 +72,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   region.pathPoints = 0;
   region.templateKey = -1;
   region.handedOver = false;
+  region.boundary = {};
   region.westLeaves.clear();
   region.southLeaves.clear();
   const Quadrant& leaf = tree[q];
@@ -80,6 +81,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y);
   const double x1 = x0 + s, y1 = y0 + s;
   const Border border{x0, y0, s};
+  region.boundary.x0 = x0, region.boundary.y0 = y0, region.boundary.size = s;
   const QuadtreeInput& in = tree.input;
 
   // Every point of the border that is a mesh vertex: corners, finer neighbours' corners, the
@@ -106,8 +108,10 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     else tree.neighbors(q, side, across);
     if (side == Side::West) region.westLeaves.assign(across.begin(), across.end());
     if (side == Side::South) region.southLeaves.assign(across.begin(), across.end());
+    bool open = true;
     for (int32_t n : across) {
       const Quadrant& other = tree[n];
+      open = open && other.status == QuadStatus::Outside;
       if (other.level <= leaf.level || other.status == QuadStatus::Outside) continue;
       if (square && other.level == leaf.level + 1) {
         midpoints |= kTemplateBit[static_cast<size_t>(side)];
@@ -123,6 +127,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
         if (vertical ? (p.y > y0 && p.y < y1) : (p.x > x0 && p.x < x1)) onBorder.push_back({p});
       }
     }
+    if (open) region.boundary.openSides |= kTemplateBit[static_cast<size_t>(side)];
   }
   if (square && !deeper) {
     // The ring sorting would give: corners counter-clockwise from the lower-left, each side's
@@ -250,6 +255,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   at_.clear();
   for (const RegionPoint& p : region.ring) at_.push_back(p.at);
   region.inner = centroid(at_);
+  region.boundary.pathPoints = region.pathPoints;
   return region;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesher/quadtree.h"
+#include "mesher/subdomain_removal.h"
 
 #include <array>
 #include <vector>
@@ -20,6 +21,8 @@ struct LeafRegion {
   // The ring starts with the polygon's boundary through the leaf: its first `pathPoints` points
   // run along input edges (entry crossing, the vertex, exit crossing), the rest along the border.
   size_t pathPoints = 0;
+  // Which ring edges lie on the polygon's boundary (the path's, and those along open sides).
+  RingBoundary boundary;
   // Interior squares (no edge, no vertex): which of their sides carry one midpoint T-vertex, as
   // bits (1 west, 2 east, 4 south, 8 north); their rings then start at the lower-left corner and
   // differ only in that. -1 for every other leaf.

@@ -4,12 +4,18 @@
 #include "mesher/wedge_handover.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 
 namespace mesher {
 
 namespace {
 
-// Whether leaf q's vertex lies within a quarter of the leaf's size of a side, not on it: only
+// How near a side of its leaf, relative to the leaf's size, a vertex may leave a strip too thin
+// to mesh within the bound.
+constexpr double kNear = 1.0 / 3;
+
+// Whether leaf q's vertex lies within kNear of the leaf's size of a side, not on it: only
 // then is there a strip between them thin enough to fail (elsewhere the check would cost about
 // as much as meshing the leaf).
 bool nearASide(const Quadtree& tree, int32_t q) {
@@ -17,7 +23,7 @@ bool nearASide(const Quadtree& tree, int32_t q) {
   const double s = static_cast<double>(tree.edgeLength(leaf));
   const Vec2 v = (tree.input.vertices[static_cast<size_t>(leaf.vertex)] - Vec2{static_cast<double>(leaf.x), static_cast<double>(leaf.y)}) / s;
   const double nearest = std::min({v.x, v.y, 1 - v.x, 1 - v.y});
-  return nearest > 0 && nearest < 0.25;
+  return nearest > 0 && nearest < kNear;
 }
 
 // How many levels below its leaf a vertex may be taken.
@@ -33,7 +39,52 @@ bool QualityRefiner::reachesBound(int32_t q) {
   if (region.ring.empty()) return true;
   ring_.clear();
   for (const RegionPoint& p : region.ring) ring_.push_back(p.at);
-  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), region.pathPoints);
+  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary);
+}
+
+bool QualityRefiner::reachVertexLeaf(int32_t q) {
+  Quadtree& tree = built_.tree;
+  // The vertex's leaf is split, a few levels at most, until it reaches the bound; at each level
+  // it may also take a T-vertex at the middle of a side, from the leaf across split finer. Splits
+  // that do not get there (a vertex a hair from a grid line stays that close to it, relatively,
+  // for many levels) are taken back by the caller.
+  int32_t at = q;
+  for (int depth = 0;; ++depth) {
+    if (splitAcross(at)) return true;
+    if (depth == kDeeper || !tree.splitLeaf(at)) return false;
+    tried_.clear();
+    tree.leavesBelow(at, tried_);
+    bool reached = true;
+    for (int32_t c : tried_)
+      if (tree[c].vertex >= 0 && !reachesBound(c)) reached = false, at = c;
+    if (reached) return true;
+  }
+}
+
+bool QualityRefiner::splitAcross(int32_t q) {
+  Quadtree& tree = built_.tree;
+  const Quadrant leaf = tree[q];
+  const double s = static_cast<double>(tree.edgeLength(leaf)), root = static_cast<double>(tree.edgeLength(tree[0]));
+  const Vec2 v = tree.input.vertices[static_cast<size_t>(leaf.vertex)];
+  const Vec2 lo{static_cast<double>(leaf.x), static_cast<double>(leaf.y)};
+  // The sides nearest the vertex first (a far one can help too: the strip may run along it);
+  // just across each, beside the vertex's foot, the leaf there is split until it is finer
+  // than q.
+  std::array<std::pair<double, Vec2>, 4> sides{{{v.x - lo.x, {lo.x - 0.25, v.y}},
+                                                {lo.x + s - v.x, {lo.x + s + 0.25, v.y}},
+                                                {v.y - lo.y, {v.x, lo.y - 0.25}},
+                                                {lo.y + s - v.y, {v.x, lo.y + s + 0.25}}}};
+  std::sort(sides.begin(), sides.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [distance, across] : sides) {
+    if (across.x < 0 || across.y < 0 || across.x >= root || across.y >= root) continue;
+    const size_t mark = tree.changes.size();
+    bool split = true;
+    for (int32_t n = tree.leafAt(across); split && tree[n].level <= leaf.level; n = tree.leafAt(across))
+      split = tree[n].status != QuadStatus::Outside && tree.splitLeaf(n);
+    if (split && reachesBound(q)) return true;
+    tree.undoChanges(mark);
+  }
+  return false;
 }
 
 size_t QualityRefiner::refine() {
@@ -47,24 +98,13 @@ size_t QualityRefiner::refine() {
   else tree.leaves(leaves_);
   for (int32_t q : leaves_) {
     if (tree[q].vertex < 0 || !nearASide(tree, q) || reachesBound(q)) continue;
-    // The vertex's leaf is split until it reaches the bound, a few levels at most; splits that
-    // do not get there (a vertex a hair from a grid line stays that close to it, relatively, for
-    // many levels) are taken back.
-    const size_t mark = tree.changes.size(), firstSeed = seeds_.size();
-    int32_t at = q;
-    bool reached = false;
-    for (int depth = 0; depth < kDeeper && !reached && tree.splitLeaf(at); ++depth) {
-      const size_t from = seeds_.size();
-      tree.leavesBelow(at, seeds_);
-      reached = true;
-      for (size_t i = from; i < seeds_.size(); ++i)
-        if (tree[seeds_[i]].vertex >= 0 && !reachesBound(seeds_[i])) reached = false, at = seeds_[i];
-    }
-    if (!reached) {
+    const size_t mark = tree.changes.size();
+    if (!reachVertexLeaf(q)) {
       tree.undoChanges(mark);
-      seeds_.resize(firstSeed);
       continue;
     }
+    for (size_t i = mark; i < tree.changes.size(); ++i)
+      if (!tree.changes[i].isMerge()) tree.leavesBelow(tree.changes[i].quadrant, seeds_);
     ++splits;
   }
   if (!seeds_.empty()) balanceAround(tree, seeds_);

@@ -26,11 +26,17 @@ class QualityRefiner {
 
  private:
   bool reachesBound(int32_t q);
+  // Splits vertex leaf q, and leaves across its sides, until its region reaches the bound;
+  // false when a few levels do not get there (the splits are left for the caller to undo).
+  bool reachVertexLeaf(int32_t q);
+  // Whether splitting the leaf across one side of vertex leaf q finer than q makes q reach the
+  // bound; the first such split is kept, the others are taken back.
+  bool splitAcross(int32_t q);
 
   PolygonTree& built_;
   LeafRegionBuilder regions_;
   SubdomainRemover remover_;
-  std::vector<int32_t> leaves_, seeds_, takers_;
+  std::vector<int32_t> leaves_, seeds_, takers_, tried_;
   std::vector<Vec2> ring_;
 };
 

@@ -15,18 +15,6 @@ namespace mesher {
 
 namespace {
 
-// A corner counts as turning when its sine exceeds this: no slivers, no 180-degree corners.
-constexpr double kMinSine = 1e-9;
-
-bool turnsLeft(Vec2 a, Vec2 b, Vec2 c) {
-  const double lengths = glm::length(b - a) * glm::length(c - b);
-  return lengths > 0 && orient2(a, b, c) > kMinSine * lengths;
-}
-
-bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  return turnsLeft(a, b, c) && turnsLeft(b, c, d) && turnsLeft(c, d, a) && turnsLeft(d, a, b);
-}
-
 void earClipAndMerge(const std::vector<Vec2>& ring, std::vector<RingElement>& out) {
   const auto triangles = triangulate({ring, {}});
   std::vector<bool> used(triangles.size(), false);
@@ -55,12 +43,14 @@ void earClipAndMerge(const std::vector<Vec2>& ring, std::vector<RingElement>& ou
   }
 }
 
-double angleDeg(Vec2 prev, Vec2 at, Vec2 next) {
-  const Vec2 u = prev - at, v = next - at;
-  return fastAtan2(std::abs(u.x * v.y - u.y * v.x), glm::dot(u, v)) * (180 / std::numbers::pi);
-}
-
 }  // namespace
+
+bool RingBoundary::onBoundary(const std::vector<Vec2>& ring, size_t i) const {
+  if (i + 1 < pathPoints) return true;
+  const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+  return ((openSides & 1) && a.x == x0 && b.x == x0) || ((openSides & 2) && a.x == x0 + size && b.x == x0 + size) ||
+         ((openSides & 4) && a.y == y0 && b.y == y0) || ((openSides & 8) && a.y == y0 + size && b.y == y0 + size);
+}
 
 void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge) {
   const std::vector<uint32_t>& run = run_;
@@ -130,13 +120,13 @@ double SubdomainRemover::score() const {
     for (uint8_t k = 0; k < e.count; ++k) {
       const uint32_t at = e.v[k];
       if (reach_[at] <= 0) continue;
-      const double angle = angleDeg(shaped_[e.v[(k + e.count - 1) % e.count]], shaped_[at], shaped_[e.v[(k + 1) % e.count]]);
+      const double angle = cornerAngleDeg(shaped_[e.v[(k + e.count - 1) % e.count]], shaped_[at], shaped_[e.v[(k + 1) % e.count]]);
       worst = std::min(worst, angle / reach_[at]);
     }
   return worst;
 }
 
-double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale) {
+void SubdomainRemover::shape(size_t n, Vec2 shapeScale) {
   // Angles are judged with the ring scaled to its true proportions.
   shaped_.assign(points_.begin(), points_.end());
   for (Vec2& p : shaped_) p *= shapeScale;
@@ -150,9 +140,13 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
     const double dot = glm::dot(u, v), turn = v.x * u.y - v.y * u.x;  // > 0: a convex corner
     if (turn > 0 && dot > 0 && turn < kTanBound * dot) {
       tanReach_[i] = turn / dot;
-      reach_[i] = angleDeg(shaped_[(i + n - 1) % n], shaped_[i], shaped_[(i + 1) % n]);
+      reach_[i] = cornerAngleDeg(shaped_[(i + n - 1) % n], shaped_[i], shaped_[(i + 1) % n]);
     }
   }
+}
+
+double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale, bool hinges) {
+  shape(n, shapeScale);
   // Good sets beat the rest; among good ones the fewest elements win, among the rest a clearly
   // better score (or as good a one with fewer elements). The thesis' hinge goes first, so it
   // wins ties. No fan has fewer elements than the n - 2 triangles of a hinge merged in pairs:
@@ -184,80 +178,151 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
     }
     if (better) best_.swap(trial_), bestScore = s;
   };
-  if (preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)));
-  for (size_t h = 0; h < n && !done(); ++h)
+  if (hinges && preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)));
+  for (size_t h = 0; hinges && h < n && !done(); ++h)
     if (static_cast<int>(h) != preferredHinge) consider(fanFromHinge(points_, n, h));
   if (hasInner)
     for (size_t start = 0; start < n && !done(); ++start) consider(fanFromInside(points_, n, start));
   return bestScore;
 }
 
-void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                            std::vector<RingElement>& out, size_t boundaryPoints) {
+double SubdomainRemover::attempt(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                                 const RingBoundary* boundary, bool innerMoved) {
   const size_t n = ring.size();
   points_.assign(ring.begin(), ring.end());
   if (inner) points_.push_back(*inner);
   origin_.resize(points_.size());
   for (size_t i = 0; i < points_.size(); ++i) origin_[i] = i < n ? static_cast<int>(i) : -1;
-  const double plain = search(n, preferredHinge, inner != nullptr, shapeScale);
-  score_ = plain;
+  const double plain = search(n, preferredHinge, inner != nullptr, shapeScale, !innerMoved);
+  if (plain >= 1 || !boundary || !boundary->any()) return plain;
 
-  // Falling short, the ring may gain points on its stretch of the polygon's boundary (nothing
-  // lies across it, so they make no T-vertex): the feet of the other ring points, so that a
-  // thin strip along an edge splits into pieces across it instead of slivers along it. Every
-  // foot first; failing that, each foot alone (another one can leave a sliver beside it).
-  if (plain < 1 && boundaryPoints >= 2) {
-    kept_.swap(best_);
-    double bestScore = plain;
-    const size_t feet = augment(ring, boundaryPoints, inner, shapeScale, -1);
-    for (int only = -1; only < static_cast<int>(feet > 1 ? feet : 0) && bestScore < 1; ++only) {
-      if (only >= 0) augment(ring, boundaryPoints, inner, shapeScale, only);
-      const size_t m = points_.size() - (inner ? 1 : 0);
-      int hinge = -1;
-      for (size_t i = 0; i < m && preferredHinge >= 0; ++i)
-        if (origin_[i] == preferredHinge) hinge = static_cast<int>(i);
-      const double augmented = feet > 0 ? search(m, hinge, inner != nullptr, shapeScale) : -1;
-      if (augmented >= 1 || augmented > bestScore + 0.05) {
-        bestScore = augmented;
-        augmentedBest_.swap(best_);
-        augmentedPoints_.assign(points_.begin(), points_.end());
-        augmentedOrigin_.assign(origin_.begin(), origin_.end());
+  // Falling short, the ring may gain points on its edges along the polygon's boundary (nothing
+  // lies across them, so they make no T-vertex): the feet of the other points, so that a thin
+  // strip along an edge splits into pieces across it instead of slivers along it. Every foot
+  // first; failing that, each foot alone (another one can leave a sliver beside it).
+  kept_.swap(best_);
+  double bestScore = plain;
+  const size_t feet = augment(ring, *boundary, inner, shapeScale, -1);
+  for (int only = -1; only < static_cast<int>(feet > 1 && !innerMoved ? feet : 0) && bestScore < 1; ++only) {
+    if (only >= 0) augment(ring, *boundary, inner, shapeScale, only);
+    const size_t m = points_.size() - (inner ? 1 : 0);
+    int hinge = -1;
+    for (size_t i = 0; i < m && preferredHinge >= 0; ++i)
+      if (origin_[i] == preferredHinge) hinge = static_cast<int>(i);
+    const double augmented = feet > 0 ? search(m, hinge, inner != nullptr, shapeScale) : -1;
+    if (augmented >= 1 || augmented > bestScore + 0.05) {
+      bestScore = augmented;
+      augmentedBest_.swap(best_);
+      augmentedPoints_.assign(points_.begin(), points_.end());
+      augmentedOrigin_.assign(origin_.begin(), origin_.end());
+    }
+  }
+  if (bestScore > plain) {
+    best_.swap(augmentedBest_);
+    points_.swap(augmentedPoints_);
+    origin_.swap(augmentedOrigin_);
+    return bestScore;
+  }
+  // Not better: back to the plain ring.
+  best_.swap(kept_);
+  points_.assign(ring.begin(), ring.end());
+  if (inner) points_.push_back(*inner);
+  origin_.resize(points_.size());
+  for (size_t i = 0; i < points_.size(); ++i) origin_[i] = i < n ? static_cast<int>(i) : -1;
+  return plain;
+}
+
+bool SubdomainRemover::partitionReaches(const std::vector<Vec2>& ring, const Vec2* inner, Vec2 shapeScale,
+                                        const RingBoundary* boundary, bool noFan) {
+  // The ring as it is, then with every foot on its boundary edges.
+  const bool withFeet = boundary && boundary->any();
+  for (int feet = 0; feet < (withFeet ? 2 : 1); ++feet) {
+    if (feet == 0) {
+      points_.assign(ring.begin(), ring.end());
+      origin_.resize(ring.size());
+      for (size_t i = 0; i < ring.size(); ++i) origin_[i] = static_cast<int>(i);
+    } else if (augment(ring, *boundary, inner, shapeScale, -1) == 0) {
+      break;
+    }
+    const size_t n = points_.size() - (feet == 1 && inner ? 1 : 0);
+    shape(n, shapeScale);
+    ringOnly_.assign(points_.begin(), points_.begin() + static_cast<std::ptrdiff_t>(n));
+    trial_.clear();
+    const double score = partition_.partition(ringOnly_, shaped_, reach_, trial_);
+    // A ring no point sees whole takes the best partition even when it falls short.
+    if (score >= 1 || (noFan && feet == 0 && score >= 0)) {
+      best_.swap(trial_);
+      score_ = score;
+      return true;
+    }
+  }
+  return false;
+}
+
+void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                            std::vector<RingElement>& out, const RingBoundary* boundary) {
+  score_ = attempt(ring, preferredHinge, inner, shapeScale, boundary);
+  // Still short, the inner point may sit elsewhere: in line with a ring point across or along
+  // the region (a thin strip beside a point close to its corner is cut square there, and the
+  // inner point's foot on the boundary splits the strip).
+  if (score_ < 1 && inner) {
+    candidates_.clear();
+    for (const Vec2& p : ring)
+      for (const Vec2& c : {Vec2{p.x, inner->y}, Vec2{inner->x, p.y}})
+        if (c != *inner && std::find(candidates_.begin(), candidates_.end(), c) == candidates_.end() && containsPoint(ring, c))
+          candidates_.push_back(c);
+    for (size_t i = 0; i < candidates_.size() && score_ < 1; ++i) {
+      keep();
+      const double s = attempt(ring, preferredHinge, &candidates_[i], shapeScale, boundary, true);
+      if (s >= 1) {
+        score_ = s;
+        continue;
       }
+      restore();
     }
-    if (bestScore > plain) {
-      score_ = bestScore;
-      points_.swap(augmentedPoints_);
-      origin_.swap(augmentedOrigin_);
-      out.insert(out.end(), augmentedBest_.begin(), augmentedBest_.end());
-      return;
-    }
-    // Not better: back to the plain ring.
-    best_.swap(kept_);
-    points_.assign(ring.begin(), ring.end());
-    if (inner) points_.push_back(*inner);
-    origin_.resize(points_.size());
-    for (size_t i = 0; i < points_.size(); ++i) origin_[i] = i < n ? static_cast<int>(i) : -1;
+  }
+  // Still short, or no fan at all: pieces around several points (ConvexPartition).
+  if (score_ < 1) {
+    keep();
+    if (!partitionReaches(ring, inner, shapeScale, boundary, best_.empty())) restore();
   }
   if (!best_.empty()) {
     out.insert(out.end(), best_.begin(), best_.end());
     return;
   }
   score_ = -1;
-  if (firstGood_) return;  // reachesBound asks only whether a fan reaches the bound: none did
+  if (firstGood_) return;  // reachesBound asks only whether some set reaches the bound: none did
+  points_.assign(ring.begin(), ring.end());
+  origin_.resize(ring.size());
+  for (size_t i = 0; i < ring.size(); ++i) origin_[i] = static_cast<int>(i);
   earClipAndMerge(ring, out);
 }
 
+void SubdomainRemover::keep() {
+  keptScore_ = score_;
+  chosenBest_.assign(best_.begin(), best_.end());
+  chosenPoints_.assign(points_.begin(), points_.end());
+  chosenOrigin_.assign(origin_.begin(), origin_.end());
+}
+
+void SubdomainRemover::restore() {
+  score_ = keptScore_;
+  best_.swap(chosenBest_);
+  points_.swap(chosenPoints_);
+  origin_.swap(chosenOrigin_);
+}
+
 bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                                    size_t boundaryPoints) {
+                                    const RingBoundary* boundary) {
   firstGood_ = true;
   unused_.clear();
-  mesh(ring, preferredHinge, inner, shapeScale, unused_, boundaryPoints);
+  mesh(ring, preferredHinge, inner, shapeScale, unused_, boundary);
   firstGood_ = false;
   return score_ >= 1;
 }
 
-size_t SubdomainRemover::augment(const std::vector<Vec2>& ring, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale,
-                                 int only) {
+size_t SubdomainRemover::augment(const std::vector<Vec2>& ring, const RingBoundary& boundary, const Vec2* inner,
+                                 Vec2 shapeScale, int only) {
   const size_t n = ring.size();
   points_.clear();
   origin_.clear();
@@ -266,21 +331,26 @@ size_t SubdomainRemover::augment(const std::vector<Vec2>& ring, size_t boundaryP
   for (size_t i = 0; i < n; ++i) {
     points_.push_back(ring[i]);
     origin_.push_back(static_cast<int>(i));
-    if (i + 1 >= boundaryPoints) continue;
-    // Feet on the boundary edge ring[i] -> ring[i + 1], judged in true proportions.
-    const Vec2 a = ring[i] * shapeScale, ab = ring[i + 1] * shapeScale - a;
+    if (!boundary.onBoundary(ring, i)) continue;
+    // Feet on the boundary edge ring[i] -> ring[next], judged in true proportions.
+    const size_t next = (i + 1) % n;
+    const Vec2 a = ring[i] * shapeScale, ab = ring[next] * shapeScale - a;
     const double length2 = glm::dot(ab, ab);
     feet.clear();
-    for (size_t j = 0; j < n; ++j) {
-      if (j == i || j == i + 1 || length2 == 0) continue;
-      const double t = glm::dot(ring[j] * shapeScale - a, ab) / length2;
-      if (t > 0.05 && t < 0.95) feet.push_back(t);
+    for (size_t j = 0; j <= n; ++j) {
+      if (j == i || j == next || length2 == 0 || (j == n && !inner)) continue;
+      const Vec2 ap = (j < n ? ring[j] : *inner) * shapeScale - a;
+      const double t = glm::dot(ap, ab) / length2;
+      // A foot as close to an end of the edge as a third of the point's distance from it would
+      // leave a sliver between them.
+      const double fromEnd = std::min(t, 1 - t) * std::sqrt(length2), distance = std::abs(ap.x * ab.y - ap.y * ab.x) / std::sqrt(length2);
+      if (fromEnd > 0.34 * distance && fromEnd > 1e-3 * std::sqrt(length2)) feet.push_back(t);
     }
     std::sort(feet.begin(), feet.end());
     feet.erase(std::unique(feet.begin(), feet.end(), [](double s, double t) { return t - s < 0.05; }), feet.end());
     for (double t : feet) {
       if (only < 0 || static_cast<size_t>(only) == found) {
-        points_.push_back(ring[i] + t * (ring[i + 1] - ring[i]));
+        points_.push_back(ring[i] + t * (ring[next] - ring[i]));
         origin_.push_back(-1);
       }
       ++found;

@@ -3,6 +3,7 @@
 // same procedure over every hinge, which yields the templates of 5.3.
 #pragma once
 
+#include "mesher/convex_partition.h"
 #include "mesher/mesher.h"
 #include "mesher/polygon.h"
 
@@ -12,10 +13,17 @@
 
 namespace mesher {
 
-// Three or four indices into a ring, counter-clockwise.
-struct RingElement {
-  std::array<uint32_t, 4> v{};
-  uint8_t count = 0;
+// Which edges of a leaf's ring (ring[i] -> ring[i + 1], the last back to the first) lie on the
+// polygon's boundary, where points may be added without making a T-vertex: the path's (the
+// ring's first pathPoints points run along input edges), and those along an open side of the
+// leaf square, across which there is no inside (the root's border, or only leaves outside the
+// polygon). Worked out edge by edge only for the few rings that need points added.
+struct RingBoundary {
+  size_t pathPoints = 0;
+  int openSides = 0;  // bits: 1 west, 2 east, 4 south, 8 north
+  double x0 = 0, y0 = 0, size = 0;  // the leaf square, tree coordinates
+  bool any() const { return pathPoints >= 2 || openSides != 0; }
+  bool onBoundary(const std::vector<Vec2>& ring, size_t i) const;
 };
 
 // Meshes leaf rings by subdomain removal. Among the fans from each hinge and, when `inner` is
@@ -28,11 +36,12 @@ struct RingElement {
 // axis). Scratch memory is kept from ring to ring.
 class SubdomainRemover {
  public:
-  // `boundaryPoints`: the ring's first points run along the polygon's boundary (LeafRegion's
-  // pathPoints). Where no fan reaches the bound, points may be added on that stretch: elements
-  // then index points(), and ringIndexOf() tells which of them are ring points.
+  // `boundary`, when given: which ring edges lie on the polygon's boundary (LeafRegion's). Where
+  // no fan reaches the bound, points may be added on them, the inner point may move, and pieces
+  // may gather around several points (ConvexPartition): elements then index points(), and
+  // ringIndexOf() tells which of them are ring points.
   void mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-            std::vector<RingElement>& out, size_t boundaryPoints = 0);
+            std::vector<RingElement>& out, const RingBoundary* boundary = nullptr);
   // The points the last mesh() call's elements index (tree coordinates): the ring with any
   // added points in order, then the inner point.
   const std::vector<Vec2>& points() const { return points_; }
@@ -42,7 +51,7 @@ class SubdomainRemover {
   // own corner there, when that is sharper); quicker than mesh(), as it stops at the first fan
   // that does.
   bool reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                    size_t boundaryPoints = 0);
+                    const RingBoundary* boundary = nullptr);
 
  private:
   // Fans `points` (a ring, with the inner point appended when there is one) out from
@@ -56,11 +65,31 @@ class SubdomainRemover {
   bool fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start);
   void mergeRun(const std::vector<Vec2>& points, uint32_t hinge);
   // The best fan of points_ (the first n a ring, then the inner point when `hasInner`) into
-  // best_; returns its score.
-  double search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale);
-  // Rebuilds points_ and origin_ as `ring` with the feet of its points on its boundary stretch
-  // (all of them, or only the one numbered `only`); returns how many feet there are.
-  size_t augment(const std::vector<Vec2>& ring, size_t boundaryPoints, const Vec2* inner, Vec2 shapeScale, int only);
+  // best_, from ring points too unless `hinges` is false; returns its score.
+  double search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale, bool hinges = true);
+  // The best fan of `ring` around `inner` (see mesh()), with points added on the boundary
+  // stretch when that does better: into best_, points_ and origin_; returns its score.
+  // `innerMoved`: only the inner point differs from an attempt before, so the plain ring's
+  // fans from its own points are not tried again.
+  double attempt(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
+                 const RingBoundary* boundary, bool innerMoved = false);
+  // Partitions the ring, then the ring with the feet on its boundary edges, into convex pieces
+  // (ConvexPartition); the first partition reaching the bound becomes best_ (with points_,
+  // origin_ and score_ to match). When `noFan`, the plain ring's best partition does even if
+  // it falls short. False when none did (points_ and origin_ are then overwritten).
+  bool partitionReaches(const std::vector<Vec2>& ring, const Vec2* inner, Vec2 shapeScale,
+                        const RingBoundary* boundary, bool noFan);
+  // Sets aside best_, points_, origin_ and score_, and brings them back.
+  void keep();
+  void restore();
+  // Scales points_' first n (a ring) to true proportions into shaped_, and works out what
+  // each corner can reach (reach_, tanReach_).
+  void shape(size_t n, Vec2 shapeScale);
+  // Rebuilds points_ and origin_ as `ring` with the feet of its points and `inner` on its
+  // boundary edges (all of them, or only the one numbered `only`); returns how many feet there
+  // are.
+  size_t augment(const std::vector<Vec2>& ring, const RingBoundary& boundary, const Vec2* inner, Vec2 shapeScale,
+                 int only);
   // How close trial_ comes to the bound: 1 or more when every angle reaches what it can.
   double score() const;
   // Whether trial_ reaches the bound at every corner (score() >= 1), without angles.
@@ -72,9 +101,13 @@ class SubdomainRemover {
   std::vector<int> origin_;
   std::vector<double> feet_;
   std::vector<RingElement> trial_, best_, kept_, unused_, augmentedBest_;
-  std::vector<Vec2> augmentedPoints_;
-  std::vector<int> augmentedOrigin_;
+  std::vector<Vec2> augmentedPoints_, candidates_, chosenPoints_;
+  std::vector<int> augmentedOrigin_, chosenOrigin_;
+  std::vector<RingElement> chosenBest_;
+  std::vector<Vec2> ringOnly_;
+  ConvexPartition partition_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound
+  double keptScore_ = -1;
   bool firstGood_ = false;  // the search stops at the first fan that reaches the bound
 };
 

@@ -93,14 +93,18 @@ TEST(EditPath, TheDisplayAfterAMoveHasNoNegativeLight) {
   solver->solve(0.01);
   const uint32_t chair = *editor.findObject("chair");
   ObjectPose pose = poseOf(editor.scene().objects[chair]);
-  pose.position += Vec3{0.5, 0, -0.3};
-  editor.setPose(chair, pose);
-  applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
-  solver->solve(0.01);
-  // The case this is about: the solution itself holds such residue.
+  // The case this is about: the solution itself holds such residue. Which move leaves some
+  // depends on the mesh, so the chair moves on, a few times at most, until one does.
   bool belowZero = false;
-  for (uint32_t s = 0; s < solver->surfaceCount(); ++s)
-    for (const glm::dvec3& r : solver->vertexRadiance(s, solver->ambient())) belowZero = belowZero || r.x < 0 || r.y < 0 || r.z < 0;
+  for (const Vec3 step : {Vec3{0.5, 0, -0.3}, Vec3{-0.4, 0, 0.5}, Vec3{0.3, 0, 0.4}, Vec3{-0.6, 0, -0.2}, Vec3{0.2, 0, -0.5}}) {
+    pose.position += step;
+    editor.setPose(chair, pose);
+    applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
+    solver->solve(0.01);
+    for (uint32_t s = 0; s < solver->surfaceCount(); ++s)
+      for (const glm::dvec3& r : solver->vertexRadiance(s, solver->ambient())) belowZero = belowZero || r.x < 0 || r.y < 0 || r.z < 0;
+    if (belowZero) break;
+  }
   ASSERT_TRUE(belowZero);
   DisplayMesh mesh = displayMesh(editor.meshed());
   displayRadiance(*solver, mesh.radiance);

@@ -1,5 +1,5 @@
-// Splits for element quality beyond the thesis: vertex leaves that no fan meshes within the
-// angle bound get a smaller leaf when that helps, and only then.
+// Splits for element quality beyond the thesis: vertex leaves that do not mesh within the angle
+// bound get a smaller leaf, or a finer leaf across a side, when that helps, and only then.
 #include "mesher/quality_refinement.h"
 
 #include "mesher/balance.h"
@@ -23,15 +23,16 @@ PolygonWithHoles notchCornerIn(double fx, double fy) {
   return {{{0, 0}, {16, 0}, {16, y}, {x, y}, {x, 16}, {0, 16}}, {}};
 }
 
-// Whether the leaf holding the reflex corner meshes within the bound, as the emitter would.
-bool cornerLeafReachesBound(const PolygonTree& built) {
-  const Vec2 corner = built.tree.input.vertices[3];
+// Whether the leaf holding a corner (the reflex one, by default) meshes within the bound, as
+// the emitter would.
+bool cornerLeafReachesBound(const PolygonTree& built, Vec2 corner) {
   LeafRegionBuilder regions(built);
   const LeafRegion& region = regions.build(built.tree.leafAt(corner));
   std::vector<Vec2> ring;
   for (const RegionPoint& p : region.ring) ring.push_back(p.at);
-  return SubdomainRemover().reachesBound(ring, region.hinge, &region.inner, built.frame.planePerTree(), region.pathPoints);
+  return SubdomainRemover().reachesBound(ring, region.hinge, &region.inner, built.frame.planePerTree(), &region.boundary);
 }
+bool cornerLeafReachesBound(const PolygonTree& built) { return cornerLeafReachesBound(built, built.tree.input.vertices[3]); }
 
 TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
   const PolygonWithHoles polygon = notchCornerIn(0.8667, 0.1333);
@@ -45,6 +46,27 @@ TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
   test::expectValidMesh(check);
   EXPECT_EQ(check.belowAngleBound, 0u);
   EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
+// The Cornell box's floor with the tall block's footprint square to the walls: its corner
+// (343, 332) lies 4.5 units from the side of a leaf 35 units on edge, and the strip between
+// them leaves that side no element within the bound. Split, the leaf would put the corner a
+// hair under a grid line; the leaf across is split instead, and its T-vertex at the side's
+// middle anchors the strip. (Two elements were below the bound before.)
+TEST(QualityRefinement, ACornerNearASideTakesAMidpointFromAcross) {
+  const PolygonWithHoles floor{{{0, 0}, {556, 0}, {556, 559.2}, {0, 559.2}}, {{{213, 332}, {343, 332}, {343, 227}, {213, 227}}}};
+  PolygonTree built = buildPolygonTree(floor, 60);
+  balance(built.tree);
+  const Vec2 corner = built.frame.toTree({343, 332});
+  const uint8_t level = built.tree[built.tree.leafAt(corner)].level;
+  ASSERT_FALSE(cornerLeafReachesBound(built, corner));
+  EXPECT_GT(refineForQuality(built), 0u);
+  EXPECT_TRUE(cornerLeafReachesBound(built, corner));
+  EXPECT_EQ(built.tree[built.tree.leafAt(corner)].level, level);
+
+  const MeshCheck check = checkMesh(floor, meshPolygon(floor, {60}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
 }
 
 // A corner a hair from a grid line stays that close to one, relatively, for more levels than

@@ -1,0 +1,62 @@
+// The best partition of a small ring into convex triangles and quadrilaterals with corners at
+// its points, by dynamic programming over chords (Klincsek's scheme for optimal polygon
+// triangulations, with four-cornered pieces too). Subdomain removal (5.4) fans every piece out
+// from one point; a thin strip with a point near one end needs pieces around several.
+#pragma once
+
+#include "mesher/polygon.h"
+
+#include <glm/geometric.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace mesher {
+
+// Whether a -> b -> c turns left by more than a sliver: the sine of the turn exceeds 1e-9 (no
+// 180-degree corners). Inline: fans test every corner they make.
+inline bool turnsLeft(Vec2 a, Vec2 b, Vec2 c) {
+  const double lengths = glm::length(b - a) * glm::length(c - b);
+  return lengths > 0 && orient2(a, b, c) > 1e-9 * lengths;
+}
+inline bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return turnsLeft(a, b, c) && turnsLeft(b, c, d) && turnsLeft(c, d, a) && turnsLeft(d, a, b);
+}
+
+// Three or four indices into a ring, counter-clockwise.
+struct RingElement {
+  std::array<uint32_t, 4> v{};
+  uint8_t count = 0;
+};
+
+class ConvexPartition {
+ public:
+  // Partitions the simple counter-clockwise ring `points` (shapes judged there: collinear grid
+  // points are exact in tree coordinates) into strictly convex pieces. The score of a piece is
+  // its worst corner angle, measured on `shaped` (the ring in true proportions), over what that
+  // corner can reach (`reach`, degrees); a partition's is its worst piece's. The best partition
+  // wins, and among those scoring 1 or more the one with fewest pieces. Appends it to `out` and
+  // returns its score, or returns -1 when the ring has no such partition. Cost grows with the
+  // fourth power of the ring's size: meant for the few rings fans leave short.
+  double partition(const std::vector<Vec2>& points, const std::vector<Vec2>& shaped, const std::vector<double>& reach,
+                   std::vector<RingElement>& out);
+
+ private:
+  struct Best {
+    double score = -1;  // -1: no partition
+    uint32_t count = 0;
+    // The piece on the sub-ring's closing chord: its corners between the chord's ends.
+    uint32_t a = 0, b = 0;  // b == a: a triangle
+  };
+  bool isDiagonal(size_t i, size_t j) const;
+  void emit(size_t i, size_t j, std::vector<RingElement>& out) const;
+
+  const std::vector<Vec2>* points_ = nullptr;
+  size_t n_ = 0;
+  std::vector<uint8_t> chord_;  // n x n: ring edge or inner diagonal
+  std::vector<Best> best_;      // n x n, for i < j: the sub-ring i, i + 1, ..., j
+  std::vector<double> length_;  // n x n: distances between ring points
+};
+
+}  // namespace mesher
