@@ -190,14 +190,17 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     }
   }
 
-  // Order the border points counter-clockwise, one per position.
-  std::sort(onBorder.begin(), onBorder.end(), [&](const RegionPoint& a, const RegionPoint& b) {
-    const double pa = border.param(a.at), pb = border.param(b.at);
-    return pa < pb || (pa == pb && a.inputVertex > b.inputVertex);
+  // Order the border points counter-clockwise, one per position (an input vertex first).
+  std::vector<std::pair<double, RegionPoint>>& keyed = keyed_;
+  keyed.clear();
+  for (const RegionPoint& p : onBorder) keyed.push_back({border.param(p.at), p});
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+    return a.first < b.first || (a.first == b.first && a.second.inputVertex > b.second.inputVertex);
   });
-  onBorder.erase(std::unique(onBorder.begin(), onBorder.end(),
-                             [](const RegionPoint& a, const RegionPoint& b) { return a.at == b.at; }),
-                 onBorder.end());
+  keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.second.at == b.second.at; }),
+              keyed.end());
+  onBorder.clear();
+  for (const auto& [param, p] : keyed) onBorder.push_back(p);
 
   // An edge that only grazes a corner (its crossings snapped onto one point) leaves the square
   // wholly on one side: which, its own direction says at the centre.
@@ -216,15 +219,11 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   const double from = border.param(path.back().at), to = border.param(path.front().at);
   const double span = to > from ? to - from : to + 4 * s - from;
   region.ring.assign(path.begin(), path.end());
-  std::vector<std::pair<double, RegionPoint>>& walk = walk_;
-  walk.clear();
-  for (const RegionPoint& p : onBorder) {
-    double offset = border.param(p.at) - from;
-    if (offset < 0) offset += 4 * s;
-    if (offset > 0 && offset < span) walk.push_back({offset, p});
-  }
-  std::sort(walk.begin(), walk.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [offset, p] : walk) region.ring.push_back(p);
+  // The border points are in order of their parameter: those past `from` first, then the rest.
+  const auto pastFrom = std::upper_bound(keyed.begin(), keyed.end(), from, [](double f, const auto& k) { return f < k.first; });
+  for (auto k = pastFrom; k != keyed.end() && k->first - from < span; ++k) region.ring.push_back(k->second);
+  for (auto k = keyed.begin(); k != pastFrom && k->first + 4 * s - from < span; ++k)
+    if (k->first != from) region.ring.push_back(k->second);
   // Drop points repeated next to each other (a crossing on a corner, the vertex on the border).
   std::vector<RegionPoint>& ring = ring_;
   ring.clear();

@@ -71,7 +71,7 @@ class LeafRegionBuilder {
   std::vector<Vec2> between_, closing_;
   std::vector<int32_t>* coarseTakers_ = nullptr;
   std::vector<int32_t> across_;
-  std::vector<std::pair<double, RegionPoint>> walk_;
+  std::vector<std::pair<double, RegionPoint>> keyed_;  // border points by their place along the border
   Ring2 at_;
 };
 

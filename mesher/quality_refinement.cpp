@@ -78,7 +78,8 @@ bool QualityRefiner::splitAcross(int32_t q) {
   for (const auto& [distance, across] : sides) {
     if (across.x < 0 || across.y < 0 || across.x >= root || across.y >= root) continue;
     const size_t mark = tree.changes.size();
-    bool split = true;
+    // A leaf across that is finer already gives q nothing new.
+    bool split = tree[tree.leafAt(across)].level <= leaf.level;
     for (int32_t n = tree.leafAt(across); split && tree[n].level <= leaf.level; n = tree.leafAt(across))
       split = tree[n].status != QuadStatus::Outside && tree.splitLeaf(n);
     if (split && reachesBound(q)) return true;

@@ -209,7 +209,7 @@ double SubdomainRemover::attempt(const std::vector<Vec2>& ring, int preferredHin
     int hinge = -1;
     for (size_t i = 0; i < m && preferredHinge >= 0; ++i)
       if (origin_[i] == preferredHinge) hinge = static_cast<int>(i);
-    const double augmented = feet > 0 ? search(m, hinge, inner != nullptr, shapeScale) : -1;
+    const double augmented = feet > 0 ? search(m, hinge, inner != nullptr, shapeScale, !innerMoved) : -1;
     if (augmented >= 1 || augmented > bestScore + 0.05) {
       bestScore = augmented;
       augmentedBest_.swap(best_);
@@ -262,6 +262,14 @@ bool SubdomainRemover::partitionReaches(const std::vector<Vec2>& ring, const Vec
 void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
                             std::vector<RingElement>& out, const RingBoundary* boundary) {
   score_ = attempt(ring, preferredHinge, inner, shapeScale, boundary);
+  // Still short, or no fan at all: pieces around several points (ConvexPartition). Asked only
+  // whether some set reaches the bound, this goes first: it settles most rings at once.
+  auto partition = [&] {
+    if (score_ >= 1) return;
+    keep();
+    if (!partitionReaches(ring, inner, shapeScale, boundary, best_.empty())) restore();
+  };
+  if (firstGood_) partition();
   // Still short, the inner point may sit elsewhere: in line with a ring point across or along
   // the region (a thin strip beside a point close to its corner is cut square there, and the
   // inner point's foot on the boundary splits the strip).
@@ -281,11 +289,7 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
       restore();
     }
   }
-  // Still short, or no fan at all: pieces around several points (ConvexPartition).
-  if (score_ < 1) {
-    keep();
-    if (!partitionReaches(ring, inner, shapeScale, boundary, best_.empty())) restore();
-  }
+  if (!firstGood_) partition();
   if (!best_.empty()) {
     out.insert(out.end(), best_.begin(), best_.end());
     return;
