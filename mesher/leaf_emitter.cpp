@@ -15,6 +15,9 @@ namespace {
 // large.
 constexpr uint32_t kOpenSidesMark = 0xfffffff0u;
 
+// How many stretches' templates are kept before starting over.
+constexpr size_t kTemplateStretches = 1024;
+
 }  // namespace
 
 // Mesh vertex ids by their exact tree coordinates: leaves sharing a point compute it bit for bit
@@ -136,8 +139,17 @@ void LeafEmitter::reset(const PolygonWithHoles& polygon, size_t expectedLeaves) 
   inputToMesh_.clear();
   bool added;
   for (const Vec2& v : built_.tree.input.vertices) inputToMesh_.push_back(ids_->findOrAdd(v, added));
-  // Templates depend on the frame's stretch.
-  haveTemplate_.fill(false);
+  const TreeFrame& frame = built_.frame;
+  stretchTemplates_ = 0;
+  while (stretchTemplates_ < templates_.size() && (templates_[stretchTemplates_].stretch != frame.stretch ||
+                                                   templates_[stretchTemplates_].shortAxis != frame.shortAxis))
+    ++stretchTemplates_;
+  if (stretchTemplates_ == templates_.size()) {
+    if (templates_.size() >= kTemplateStretches) templates_.clear(), stretchTemplates_ = 0;
+    templates_.emplace_back();
+    templates_.back().stretch = frame.stretch;
+    templates_.back().shortAxis = frame.shortAxis;
+  }
 }
 
 void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plane) {
@@ -289,12 +301,20 @@ void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::v
   const bool fromTemplate = leaf.templateKey >= 0;
   if (fromTemplate) {
     const auto key = static_cast<size_t>(leaf.templateKey);
-    if (!haveTemplate_[key]) {
-      templates_[key].clear();
-      subdomains_.mesh(ring_, -1, &inner, built_.frame.planePerTree(), templates_[key]);
-      haveTemplate_[key] = true;
+    Templates& templates = templates_[stretchTemplates_];
+    if (!templates.have[key]) {
+      // The ring on the unit square (it starts at the lower-left corner; leaf edges are powers
+      // of two, so this is exact), in the frame's proportions.
+      const double s = static_cast<double>(built_.tree.edgeLength(built_.tree[q]));
+      unitRing_.clear();
+      for (const Vec2& p : ring_) unitRing_.push_back((p - ring_[0]) / s);
+      Vec2 proportions{1, 1};
+      proportions[built_.frame.shortAxis] /= built_.frame.stretch;
+      const Vec2 centre{0.5, 0.5};
+      subdomains_.mesh(unitRing_, -1, &centre, proportions, templates.pieces[key]);
+      templates.have[key] = true;
     }
-    elements = &templates_[key];
+    elements = &templates.pieces[key];
   } else {
     pieces_.clear();
     subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_, &leaf.boundary);

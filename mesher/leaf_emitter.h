@@ -66,9 +66,18 @@ class LeafEmitter {
   SubdomainRemover subdomains_;
   std::vector<RingElement> pieces_;
   // Interior squares differ only in which sides carry a T-vertex: their subdomains (the
-  // templates of 5.3) are worked out once per pattern.
-  std::array<std::vector<RingElement>, 16> templates_;
-  std::array<bool, 16> haveTemplate_{};
+  // templates of 5.3) are worked out once per pattern. They depend only on the frame's stretch
+  // (angles are judged in true proportions), so they are worked out on the unit square and kept
+  // for every stretch met (a scene's surfaces share few: the kitchen's 1,229 have 158).
+  struct Templates {
+    double stretch = 1;
+    int shortAxis = 1;
+    std::array<std::vector<RingElement>, 16> pieces;
+    std::array<bool, 16> have{};
+  };
+  std::vector<Templates> templates_;
+  size_t stretchTemplates_ = 0;  // templates_ entry of the current frame
+  std::vector<Vec2> unitRing_;
   // Set by emitAll. Leaves then come in tree (Morton) order, in which every leaf touching a
   // point on a leaf's east or north side, other than its south-east and north-west corners,
   // comes later: such a point is new there, unless it is an input vertex. A new point at one of

@@ -273,7 +273,7 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   // Still short, the inner point may sit elsewhere: in line with a ring point across or along
   // the region (a thin strip beside a point close to its corner is cut square there, and the
   // inner point's foot on the boundary splits the strip).
-  if (score_ < 1 && inner) {
+  if (score_ < 1 && inner && boundary) {
     candidates_.clear();
     for (const Vec2& p : ring)
       for (const Vec2& c : {Vec2{p.x, inner->y}, Vec2{inner->x, p.y}})

@@ -37,8 +37,8 @@ struct RingBoundary {
 class SubdomainRemover {
  public:
   // `boundary`, when given: which ring edges lie on the polygon's boundary (LeafRegion's). Where
-  // no fan reaches the bound, points may be added on them, the inner point may move, and pieces
-  // may gather around several points (ConvexPartition): elements then index points(), and
+  // no fan reaches the bound, points may then be added on them and the inner point may move;
+  // and pieces may gather around several points (ConvexPartition). Elements index points(), and
   // ringIndexOf() tells which of them are ring points.
   void mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
             std::vector<RingElement>& out, const RingBoundary* boundary = nullptr);
