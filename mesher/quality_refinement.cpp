@@ -34,12 +34,12 @@ constexpr int kTakerRounds = 4;
 
 }  // namespace
 
-bool QualityRefiner::reachesBound(int32_t q) {
+bool QualityRefiner::reachesBound(int32_t q, bool innerMayMove) {
   const LeafRegion& region = regions_.build(q);
   if (region.ring.empty()) return true;
   ring_.clear();
   for (const RegionPoint& p : region.ring) ring_.push_back(p.at);
-  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary);
+  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary, innerMayMove);
 }
 
 bool QualityRefiner::reachVertexLeaf(int32_t q) {
@@ -82,7 +82,9 @@ bool QualityRefiner::splitAcross(int32_t q) {
     bool split = tree[tree.leafAt(across)].level <= leaf.level;
     for (int32_t n = tree.leafAt(across); split && tree[n].level <= leaf.level; n = tree.leafAt(across))
       split = tree[n].status != QuadStatus::Outside && tree.splitLeaf(n);
-    if (split && reachesBound(q)) return true;
+    // Leaf q itself has been tried with its inner point moved: with a T-vertex more, that
+    // (the dearest step) is left out.
+    if (split && reachesBound(q, false)) return true;
     tree.undoChanges(mark);
   }
   return false;

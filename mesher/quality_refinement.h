@@ -25,7 +25,7 @@ class QualityRefiner {
   size_t refine();
 
  private:
-  bool reachesBound(int32_t q);
+  bool reachesBound(int32_t q, bool innerMayMove = true);
   // Splits vertex leaf q, and leaves across its sides, until its region reaches the bound;
   // false when a few levels do not get there (the splits are left for the caller to undo).
   bool reachVertexLeaf(int32_t q);

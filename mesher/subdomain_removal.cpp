@@ -273,7 +273,7 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   // Still short, the inner point may sit elsewhere: in line with a ring point across or along
   // the region (a thin strip beside a point close to its corner is cut square there, and the
   // inner point's foot on the boundary splits the strip).
-  if (score_ < 1 && inner && boundary) {
+  if (score_ < 1 && inner && boundary && innerMayMove_) {
     candidates_.clear();
     for (const Vec2& p : ring)
       for (const Vec2& c : {Vec2{p.x, inner->y}, Vec2{inner->x, p.y}})
@@ -317,11 +317,13 @@ void SubdomainRemover::restore() {
 }
 
 bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                                    const RingBoundary* boundary) {
+                                    const RingBoundary* boundary, bool innerMayMove) {
   firstGood_ = true;
+  innerMayMove_ = innerMayMove;
   unused_.clear();
   mesh(ring, preferredHinge, inner, shapeScale, unused_, boundary);
   firstGood_ = false;
+  innerMayMove_ = true;
   return score_ >= 1;
 }
 

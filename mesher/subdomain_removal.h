@@ -50,8 +50,9 @@ class SubdomainRemover {
   // Whether mesh() would give elements that reach kAngleBoundDeg at every corner (or the ring's
   // own corner there, when that is sharper); quicker than mesh(), as it stops at the first fan
   // that does.
+  // `innerMayMove` false leaves out the dearest step, moving the inner point.
   bool reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                    const RingBoundary* boundary = nullptr);
+                    const RingBoundary* boundary = nullptr, bool innerMayMove = true);
 
  private:
   // Fans `points` (a ring, with the inner point appended when there is one) out from
@@ -108,6 +109,7 @@ class SubdomainRemover {
   ConvexPartition partition_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound
   double keptScore_ = -1;
+  bool innerMayMove_ = true;  // false only within a reachesBound call that says so
   bool firstGood_ = false;  // the search stops at the first fan that reaches the bound
 };
 
