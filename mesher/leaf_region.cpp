@@ -72,7 +72,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   region.pathPoints = 0;
   region.templateKey = -1;
   region.handedOver = false;
-  region.boundary = {};
+  region.boundary = {};  // a template's is never asked for
   region.westLeaves.clear();
   region.southLeaves.clear();
   const Quadrant& leaf = tree[q];
@@ -81,7 +81,6 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y);
   const double x1 = x0 + s, y1 = y0 + s;
   const Border border{x0, y0, s};
-  region.boundary.x0 = x0, region.boundary.y0 = y0, region.boundary.size = s;
   const QuadtreeInput& in = tree.input;
 
   // Every point of the border that is a mesh vertex: corners, finer neighbours' corners, the
@@ -99,7 +98,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   // balanced) has only side midpoints besides its corners: those sides are noted, as bits of the
   // template key, instead of sorting points.
   const bool square = leaf.edgeCount == 0 && leaf.vertex < 0 && leaf.status == QuadStatus::Inside;
-  int midpoints = 0;
+  int midpoints = 0, openSides = 0;
   bool deeper = false;  // some finer neighbour is more than one level finer
   std::vector<int32_t>& across = across_;
   for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
@@ -108,7 +107,8 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     else tree.neighbors(q, side, across);
     if (side == Side::West) region.westLeaves.assign(across.begin(), across.end());
     if (side == Side::South) region.southLeaves.assign(across.begin(), across.end());
-    bool open = true;
+    // Interior squares always mesh within the bound: their open sides are not worked out.
+    bool open = !square;
     for (int32_t n : across) {
       const Quadrant& other = tree[n];
       open = open && other.status == QuadStatus::Outside;
@@ -127,7 +127,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
         if (vertical ? (p.y > y0 && p.y < y1) : (p.x > x0 && p.x < x1)) onBorder.push_back({p});
       }
     }
-    if (open) region.boundary.openSides |= kTemplateBit[static_cast<size_t>(side)];
+    if (open) openSides |= kTemplateBit[static_cast<size_t>(side)];
   }
   if (square && !deeper) {
     // The ring sorting would give: corners counter-clockwise from the lower-left, each side's
@@ -147,6 +147,7 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     region.inner = {x0 + s / 2, y0 + s / 2};
     return region;
   }
+  region.boundary = {0, openSides, x0, y0, s};
   // Otherwise the noted midpoints join the sort.
   for (size_t side = 0; side < 4; ++side) {
     if (!(midpoints & kTemplateBit[side])) continue;
