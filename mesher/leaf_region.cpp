@@ -69,10 +69,9 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   LeafRegion& region = region_;
   region.ring.clear();
   region.hinge = -1;
-  region.pathPoints = 0;
   region.templateKey = -1;
   region.handedOver = false;
-  region.boundary = {};  // a template's is never asked for
+  region.boundary = {};
   region.westLeaves.clear();
   region.southLeaves.clear();
   const Quadrant& leaf = tree[q];
@@ -235,17 +234,17 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
       continue;
     }
     ring.push_back(p);
-    if (i < path.size()) region.pathPoints = ring.size();
+    if (i < path.size()) region.boundary.pathPoints = ring.size();
   }
   while (ring.size() > 1 && ring.front().at == ring.back().at) {
     if (ring.back().inputVertex >= 0) ring.front() = ring.back();
     ring.pop_back();
   }
-  region.pathPoints = std::min(region.pathPoints, ring.size());
+  region.boundary.pathPoints = std::min(region.boundary.pathPoints, ring.size());
   region.ring.swap(ring);
   if (region.ring.size() < 3) {
     region.ring.clear();
-    region.pathPoints = 0;
+    region.boundary.pathPoints = 0;
     return region;
   }
   handOverWedges(q, crossings, hinge);
@@ -255,14 +254,13 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   at_.clear();
   for (const RegionPoint& p : region.ring) at_.push_back(p.at);
   region.inner = centroid(at_);
-  region.boundary.pathPoints = region.pathPoints;
   return region;
 }
 
 void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing, 2>& crossings, Vec2& hinge) {
   LeafRegion& region = region_;
   std::vector<RegionPoint>& ring = region.ring;
-  const size_t n = ring.size(), path = region.pathPoints;
+  const size_t n = ring.size(), path = region.boundary.pathPoints;
   const std::vector<uint8_t>& shallow = tree_.input.shallow;
   auto isShallow = [&](const PathCrossing& c) { return c.side >= 0 && c.edge < shallow.size() && shallow[c.edge]; };
   if (path < 2 || (!isShallow(crossings[0]) && !isShallow(crossings[1]))) return;
@@ -321,7 +319,7 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
     ring.push_back(out[i]);
   }
   while (ring.size() > 1 && ring.front().at == ring.back().at) ring.pop_back();
-  region.pathPoints = std::min(pathKept, ring.size());
+  region.boundary.pathPoints = std::min(pathKept, ring.size());
   // A giver left with points on the line through M -> M' alone has nothing left.
   bool flat = false;
   for (const std::optional<WedgeHandover>& h : handovers)
@@ -331,7 +329,7 @@ void LeafRegionBuilder::handOverWedges(int32_t q, const std::array<PathCrossing,
     }
   if (flat || ring.size() < 3) {
     ring.clear();
-    region.pathPoints = 0;
+    region.boundary.pathPoints = 0;
   }
 }
 

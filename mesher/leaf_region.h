@@ -18,10 +18,10 @@ struct RegionPoint {
 struct LeafRegion {
   std::vector<RegionPoint> ring;  // counter-clockwise; empty when the leaf has no inside
   int hinge = -1;                 // index in ring of the hinge vertex of 5.4; -1 when no edge passes
-  // The ring starts with the polygon's boundary through the leaf: its first `pathPoints` points
-  // run along input edges (entry crossing, the vertex, exit crossing), the rest along the border.
-  size_t pathPoints = 0;
-  // Which ring edges lie on the polygon's boundary (the path's, and those along open sides).
+  // Which ring edges lie on the polygon's boundary. The ring starts with the polygon's boundary
+  // through the leaf: its first boundary.pathPoints points run along input edges (entry
+  // crossing, the vertex, exit crossing), the rest along the border. Not filled in for
+  // templated squares.
   RingBoundary boundary;
   // Interior squares (no edge, no vertex): which of their sides carry one midpoint T-vertex, as
   // bits (1 west, 2 east, 4 south, 8 north); their rings then start at the lower-left corner and

@@ -1,8 +1,10 @@
 // Refinement for element quality beyond the thesis, whose subdomain removal (5.4) leaves some
-// boundary patches badly shaped: a leaf holding an input vertex whose region no fan meshes with
-// every angle at kAngleBoundDeg is split. The typical case is a reflex corner close to a side:
-// the strip between them is too thin for any element on the long side beyond it; in a leaf half
-// the size the corner sits twice as far from the sides, relatively.
+// boundary patches badly shaped: a leaf holding an input vertex whose region does not mesh with
+// every angle at kAngleBoundDeg takes a T-vertex in the middle of a side, from the leaf across
+// split finer, or is split itself. The typical case is a reflex corner close to a side: the
+// strip between them is too thin for any element on the long side beyond it; a point in the
+// middle of that side anchors the strip, and in a leaf half the size the corner sits twice as
+// far from the sides, relatively.
 #pragma once
 
 #include "mesher/leaf_region.h"
@@ -14,10 +16,10 @@
 
 namespace mesher {
 
-// Splits the leaves of a complete and balanced tree whose input vertex's region falls short of
-// the bound (judged as LeafEmitter meshes it) when the vertex's leaf a few levels down reaches
-// it, and the coarsest leaves that would take a shallow wedge (wedge_handover.h), then
-// rebalances. Returns how many leaves were split. The refiner keeps its scratch memory
+// Splits, in a complete and balanced tree, the leaves across a side of a vertex leaf whose
+// region falls short of the bound (judged as LeafEmitter meshes it), or the vertex leaf itself,
+// when that makes it reach the bound a few levels down at most, and the coarsest leaves that
+// would take a shallow wedge (wedge_handover.h); then rebalances. Returns how many leaves were split. The refiner keeps its scratch memory
 // from polygon to polygon rebuilt into the same PolygonTree.
 class QualityRefiner {
  public:
