@@ -23,6 +23,10 @@ bool touches(Vec2 a, Vec2 b, Vec2 c) {
 }
 
 bool segmentsMeet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  // Boxes apart, segments apart: most edges of a ring are far from a chord.
+  if (std::max(a.x, b.x) < std::min(c.x, d.x) || std::max(c.x, d.x) < std::min(a.x, b.x) ||
+      std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y))
+    return false;
   const double o1 = orient2(a, b, c), o2 = orient2(a, b, d), o3 = orient2(c, d, a), o4 = orient2(c, d, b);
   if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return true;
   return touches(a, b, c) || touches(a, b, d) || touches(c, d, a) || touches(c, d, b);

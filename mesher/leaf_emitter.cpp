@@ -139,17 +139,14 @@ void LeafEmitter::reset(const PolygonWithHoles& polygon, size_t expectedLeaves) 
   inputToMesh_.clear();
   bool added;
   for (const Vec2& v : built_.tree.input.vertices) inputToMesh_.push_back(ids_->findOrAdd(v, added));
-  const TreeFrame& frame = built_.frame;
-  stretchTemplates_ = 0;
-  while (stretchTemplates_ < templates_.size() && (templates_[stretchTemplates_].stretch != frame.stretch ||
-                                                   templates_[stretchTemplates_].shortAxis != frame.shortAxis))
-    ++stretchTemplates_;
-  if (stretchTemplates_ == templates_.size()) {
-    if (templates_.size() >= kTemplateStretches) templates_.clear(), stretchTemplates_ = 0;
+  const std::pair<double, int> stretch{built_.frame.stretch, built_.frame.shortAxis};
+  auto found = templatesOf_.find(stretch);
+  if (found == templatesOf_.end()) {
+    if (templates_.size() >= kTemplateStretches) templates_.clear(), templatesOf_.clear();
+    found = templatesOf_.emplace(stretch, templates_.size()).first;
     templates_.emplace_back();
-    templates_.back().stretch = frame.stretch;
-    templates_.back().shortAxis = frame.shortAxis;
   }
+  stretchTemplates_ = found->second;
 }
 
 void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plane) {

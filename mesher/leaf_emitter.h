@@ -9,6 +9,7 @@
 #include "mesher/triangulate.h"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -70,13 +71,12 @@ class LeafEmitter {
   // (angles are judged in true proportions), so they are worked out on the unit square and kept
   // for every stretch met (a scene's surfaces share few: the kitchen's 1,229 have 158).
   struct Templates {
-    double stretch = 1;
-    int shortAxis = 1;
     std::array<std::vector<RingElement>, 16> pieces;
     std::array<bool, 16> have{};
   };
   std::vector<Templates> templates_;
-  size_t stretchTemplates_ = 0;  // templates_ entry of the current frame
+  std::map<std::pair<double, int>, size_t> templatesOf_;  // by the frame's stretch and its axis
+  size_t stretchTemplates_ = 0;                           // templates_ entry of the current frame
   std::vector<Vec2> unitRing_;
   // Set by emitAll. Leaves then come in tree (Morton) order, in which every leaf touching a
   // point on a leaf's east or north side, other than its south-east and north-west corners,
