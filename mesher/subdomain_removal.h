@@ -1,6 +1,8 @@
 // Meshing one leaf's region by subdomain removal (thesis 5.4): convex quadrilaterals and
 // triangles that all share a hinge vertex, quadrilaterals preferred. Interior squares use the
-// same procedure over every hinge, which yields the templates of 5.3.
+// same procedure over every hinge, which yields the templates of 5.3. Beyond the thesis, a
+// region no such fan meshes within the angle bound takes points on its boundary, another inner
+// point, or pieces around several points.
 #pragma once
 
 #include "mesher/convex_partition.h"
@@ -29,11 +31,13 @@ struct RingBoundary {
 // Meshes leaf rings by subdomain removal. Among the fans from each hinge and, when `inner` is
 // given (a point inside the ring, index ring.size() in the elements), the fans around it, it
 // takes one whose angles all reach kAngleBoundDeg (or the ring's own corner there, when that is
-// sharper) with the fewest elements; when none does, the one closest to it. `preferredHinge`,
-// the rule of 5.4, wins ties. A ring no point sees whole is ear clipped, triangle pairs merged
-// into convex quads. Shapes are judged on `ring` (tree coordinates, where collinear grid points
-// are exact), angles on the ring scaled by `shapeScale` (plane units per tree unit on each
-// axis). Scratch memory is kept from ring to ring.
+// sharper) with the fewest elements; when none does, it goes on beyond the thesis (see mesh())
+// and, failing everything, keeps the fan closest to the bound. `preferredHinge`, the rule of
+// 5.4, wins ties. A ring that neither a fan nor a partition meshes (pinched at a point) is ear
+// clipped, triangle pairs merged into convex quads. Shapes are judged on `ring` (tree
+// coordinates, where collinear grid points are exact), angles on the ring scaled by
+// `shapeScale` (plane units per tree unit on each axis). Scratch memory is kept from ring to
+// ring.
 class SubdomainRemover {
  public:
   // `boundary`, when given: which ring edges lie on the polygon's boundary (LeafRegion's). Where
@@ -48,9 +52,8 @@ class SubdomainRemover {
   // Which ring point points()[i] is, or -1 for the inner point or an added one.
   int ringIndexOf(size_t i) const { return origin_[i]; }
   // Whether mesh() would give elements that reach kAngleBoundDeg at every corner (or the ring's
-  // own corner there, when that is sharper); quicker than mesh(), as it stops at the first fan
-  // that does.
-  // `innerMayMove` false leaves out the dearest step, moving the inner point.
+  // own corner there, when that is sharper); quicker than mesh(), as it stops at the first set
+  // that does. `innerMayMove` false leaves out the dearest step, moving the inner point.
   bool reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
                     const RingBoundary* boundary = nullptr, bool innerMayMove = true);
 
