@@ -5,11 +5,15 @@ set(cli_dir ${CMAKE_CURRENT_SOURCE_DIR}/cli)
 set(out ${WALKRAD_TEST_OUTPUT})
 
 function(walkrad_cli_test name exit)
-  cmake_parse_arguments(T "" "STDERR;STDOUT;FILE;NO_FILE" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "STDERR;STDOUT;FILE;NO_FILE;JSON" "ARGS;JSON_NUMBERS" ${ARGN})
   # add_test splits on ';', so the command's words travel joined by '|'.
   string(JOIN "|" words $<TARGET_FILE:walkrad> ${T_ARGS})
   set(defs -DEXIT=${exit} "-DCOMMAND=${words}")
-  foreach(pair STDERR=STDERR_REGEX STDOUT=STDOUT_REGEX FILE=EXPECT_FILE NO_FILE=EXPECT_NO_FILE)
+  if(T_JSON_NUMBERS)
+    string(JOIN "|" numbers ${T_JSON_NUMBERS})
+    list(APPEND defs "-DJSON_NUMBERS=${numbers}")
+  endif()
+  foreach(pair STDERR=STDERR_REGEX STDOUT=STDOUT_REGEX FILE=EXPECT_FILE NO_FILE=EXPECT_NO_FILE JSON=JSON_FILE)
     string(REPLACE "=" ";" pair ${pair})
     list(GET pair 0 option)
     list(GET pair 1 variable)
@@ -69,9 +73,14 @@ walkrad_cli_test(mesh_no_patch_size 2 ARGS mesh ${cli_dir}/no_patch_size.json ST
 walkrad_cli_test(mesh_bad_repeat 2 ARGS mesh ${cli_dir}/wall_with_window.json --repeat 0 STDERR "^walkrad: .*repeat")
 
 # --move: after converging, an object moves through the edit path and the light converges again.
+# Its statistics give each move's figures, as README lists them.
 walkrad_cli_test(render_move 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-move.png
                  --converge 0.3 --width 64 --height 48 --move "short block:40,0,-20" --move "tall block:0,10,0"
-                 STDOUT "move 1 converged in [0-9.e-]+ s: [0-9]+ shots.*move 2 converged")
+                 --stats ${out}/cli-move.json
+                 STDOUT "move 1 converged in [0-9.e-]+ s: [0-9]+ shots.*move 2 converged"
+                 JSON ${out}/cli-move.json
+                 JSON_NUMBERS moves.0.remesh_ms moves.0.first_update_ms moves.0.converge_ms moves.0.elements_changed
+                              moves.0.corrections moves.0.windowed_corrections moves.1.converge_ms)
 walkrad_cli_test(render_move_fixed 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
                  --move "room:1,0,0" STDERR "--move \"room:1,0,0\": \"room\" is not movable")
 walkrad_cli_test(render_move_unknown 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png

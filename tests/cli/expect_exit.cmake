@@ -1,6 +1,10 @@
 # Runs COMMAND (words joined by '|') and checks its exit code is EXIT and, when given, that stderr is one
-# line matching STDERR_REGEX and that stdout matches STDOUT_REGEX.
+# line matching STDERR_REGEX and that stdout matches STDOUT_REGEX; and that JSON_FILE, written afresh,
+# holds a number at each of JSON_NUMBERS (paths like moves.0.converge_ms, joined by '|').
 string(REPLACE "|" ";" COMMAND "${COMMAND}")
+if(DEFINED JSON_FILE)
+  file(REMOVE "${JSON_FILE}")
+endif()
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code EQUAL EXIT)
   message(FATAL_ERROR "exit code ${code}, expected ${EXIT}\nstdout: ${out}\nstderr: ${err}")
@@ -22,4 +26,15 @@ if(DEFINED EXPECT_FILE AND NOT EXISTS "${EXPECT_FILE}")
 endif()
 if(DEFINED EXPECT_NO_FILE AND EXISTS "${EXPECT_NO_FILE}")
   message(FATAL_ERROR "${EXPECT_NO_FILE} was written")
+endif()
+if(DEFINED JSON_FILE)
+  file(READ "${JSON_FILE}" json)
+  string(REPLACE "|" ";" numbers "${JSON_NUMBERS}")
+  foreach(number IN LISTS numbers)
+    string(REPLACE "." ";" path "${number}")
+    string(JSON type ERROR_VARIABLE error TYPE "${json}" ${path})
+    if(error OR NOT type STREQUAL "NUMBER")
+      message(FATAL_ERROR "${JSON_FILE}: ${number} is not a number (${type}${error})")
+    endif()
+  endforeach()
 endif()
