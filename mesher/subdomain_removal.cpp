@@ -200,8 +200,9 @@ double SubdomainRemover::attempt(const std::vector<Vec2>& ring, int preferredHin
   // lies across them, so they make no T-vertex): the feet of the other points, so that a thin
   // strip along an edge splits into pieces across it instead of slivers along it. Every foot
   // first; failing that, each foot alone (another one can leave a sliver beside it).
-  kept_.swap(best_);
+  save(plain_, plain);
   double bestScore = plain;
+  bool augmentedBetter = false;
   const size_t feet = augment(ring, *boundary, inner, shapeScale, -1);
   for (int only = -1; only < static_cast<int>(feet > 1 && !innerMoved ? feet : 0) && bestScore < 1; ++only) {
     if (only >= 0) augment(ring, *boundary, inner, shapeScale, only);
@@ -212,24 +213,11 @@ double SubdomainRemover::attempt(const std::vector<Vec2>& ring, int preferredHin
     const double augmented = feet > 0 ? search(m, hinge, inner != nullptr, shapeScale, !innerMoved) : -1;
     if (augmented >= 1 || augmented > bestScore + 0.05) {
       bestScore = augmented;
-      augmentedBest_.swap(best_);
-      augmentedPoints_.assign(points_.begin(), points_.end());
-      augmentedOrigin_.assign(origin_.begin(), origin_.end());
+      save(augmented_, augmented);
+      augmentedBetter = true;
     }
   }
-  if (bestScore > plain) {
-    best_.swap(augmentedBest_);
-    points_.swap(augmentedPoints_);
-    origin_.swap(augmentedOrigin_);
-    return bestScore;
-  }
-  // Not better: back to the plain ring.
-  best_.swap(kept_);
-  points_.assign(ring.begin(), ring.end());
-  if (inner) points_.push_back(*inner);
-  origin_.resize(points_.size());
-  for (size_t i = 0; i < points_.size(); ++i) origin_[i] = i < n ? static_cast<int>(i) : -1;
-  return plain;
+  return load(augmentedBetter ? augmented_ : plain_);
 }
 
 bool SubdomainRemover::partitionReaches(const std::vector<Vec2>& ring, const Vec2* inner, Vec2 shapeScale,
@@ -266,8 +254,8 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   // whether some set reaches the bound, this goes first: it settles most rings at once.
   auto partition = [&] {
     if (score_ >= 1) return;
-    keep();
-    if (!partitionReaches(ring, inner, shapeScale, boundary, best_.empty())) restore();
+    save(stage_, score_);
+    if (!partitionReaches(ring, inner, shapeScale, boundary, best_.empty())) score_ = load(stage_);
   };
   if (firstGood_) partition();
   // Still short, the inner point may sit elsewhere: in line with a ring point across or along
@@ -280,13 +268,13 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
         if (c != *inner && std::find(candidates_.begin(), candidates_.end(), c) == candidates_.end() && containsPoint(ring, c))
           candidates_.push_back(c);
     for (size_t i = 0; i < candidates_.size() && score_ < 1; ++i) {
-      keep();
+      save(stage_, score_);
       const double s = attempt(ring, preferredHinge, &candidates_[i], shapeScale, boundary, true);
       if (s >= 1) {
         score_ = s;
         continue;
       }
-      restore();
+      score_ = load(stage_);
     }
   }
   if (!firstGood_) partition();
@@ -302,18 +290,18 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   earClipAndMerge(ring, out);
 }
 
-void SubdomainRemover::keep() {
-  keptScore_ = score_;
-  chosenBest_.assign(best_.begin(), best_.end());
-  chosenPoints_.assign(points_.begin(), points_.end());
-  chosenOrigin_.assign(origin_.begin(), origin_.end());
+void SubdomainRemover::save(Solution& to, double score) const {
+  to.elements.assign(best_.begin(), best_.end());
+  to.points.assign(points_.begin(), points_.end());
+  to.origin.assign(origin_.begin(), origin_.end());
+  to.score = score;
 }
 
-void SubdomainRemover::restore() {
-  score_ = keptScore_;
-  best_.swap(chosenBest_);
-  points_.swap(chosenPoints_);
-  origin_.swap(chosenOrigin_);
+double SubdomainRemover::load(Solution& from) {
+  best_.swap(from.elements);
+  points_.swap(from.points);
+  origin_.swap(from.origin);
+  return from.score;
 }
 
 bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,

@@ -83,9 +83,17 @@ class SubdomainRemover {
   // it falls short. False when none did (points_ and origin_ are then overwritten).
   bool partitionReaches(const std::vector<Vec2>& ring, const Vec2* inner, Vec2 shapeScale,
                         const RingBoundary* boundary, bool noFan);
-  // Sets aside best_, points_, origin_ and score_, and brings them back.
-  void keep();
-  void restore();
+  // A set of elements with the points they index and its score, set aside while another is
+  // tried: save() copies best_, points_ and origin_ into `to`; load() brings `from` back and
+  // returns its score.
+  struct Solution {
+    std::vector<RingElement> elements;
+    std::vector<Vec2> points;
+    std::vector<int> origin;
+    double score = -1;
+  };
+  void save(Solution& to, double score) const;
+  double load(Solution& from);
   // Scales points_' first n (a ring) to true proportions into shaped_, and works out what
   // each corner can reach (reach_, tanReach_).
   void shape(size_t n, Vec2 shapeScale);
@@ -104,14 +112,12 @@ class SubdomainRemover {
   std::vector<uint32_t> run_;
   std::vector<int> origin_;
   std::vector<double> feet_;
-  std::vector<RingElement> trial_, best_, kept_, unused_, augmentedBest_;
-  std::vector<Vec2> augmentedPoints_, candidates_, chosenPoints_;
-  std::vector<int> augmentedOrigin_, chosenOrigin_;
-  std::vector<RingElement> chosenBest_;
+  std::vector<RingElement> trial_, best_, unused_;
+  std::vector<Vec2> candidates_;
+  Solution plain_, augmented_, stage_;  // set aside: the plain ring's, the best with feet, a stage's
   std::vector<Vec2> ringOnly_;
   ConvexPartition partition_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound
-  double keptScore_ = -1;
   bool innerMayMove_ = true;  // false only within a reachesBound call that says so
   bool firstGood_ = false;  // the search stops at the first fan that reaches the bound
 };
