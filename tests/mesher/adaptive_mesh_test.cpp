@@ -4,6 +4,7 @@
 #include "mesher/mesh_check.h"
 #include "tests/mesher/mesh_expectations.h"
 #include "tests/mesher/random_polygons.h"
+#include "tests/mesher/scene_polygons.h"
 
 #include <gtest/gtest.h>
 
@@ -215,6 +216,35 @@ TEST(AdaptiveMeshHoles, RemovingTheHoleRestoresTheMesh) {
   EXPECT_EQ(shape(mesh), original);
   expectConforming(kWall, mesh);
   EXPECT_TRUE(mesh.removeHole(id).empty());  // already gone
+}
+
+// The bookcase's side meshes its thin strips with points on sides no inside leaf lies across
+// (the root's border): leaf by leaf as whole, and a hole appearing in a shelf and vanishing again
+// leaves it as it was; refines and coarsens along the upright keep it conforming.
+TEST(AdaptiveMeshHoles, ThinStripsWithPointsOnOpenSides) {
+  const PolygonWithHoles side = test::bookcaseSide();
+  AdaptiveMesh mesh(side, {0.25});
+  const Mesh whole = meshPolygon(side, {0.25});
+  EXPECT_EQ(mesh.vertices(), whole.vertices);
+  EXPECT_EQ(mesh.elements().size(), whole.elements.size());
+  EXPECT_EQ(checkMesh(side, mesh.snapshot()).belowAngleBound, 0u);
+  const auto original = shape(mesh);
+  const Ring2 box{{4.75, 0.02}, {4.8, 0.02}, {4.8, 0.05}, {4.75, 0.05}};  // in the bottom shelf
+  const int id = mesh.insertHole(box).first;
+  ASSERT_GE(id, 0);
+  PolygonWithHoles cut = side;
+  cut.holes.push_back(Ring2(box.rbegin(), box.rend()));
+  expectConformingWith(cut, mesh);
+  EXPECT_FALSE(mesh.removeHole(id).empty());
+  EXPECT_EQ(shape(mesh), original);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> along(0.01, 1.99);
+  for (int step = 0; step < 20; ++step) {
+    const ElementId e = elementNear(mesh, {4.995, along(random)});
+    if (step % 3 == 2) mesh.coarsen(e);
+    else mesh.refine(e);
+    expectConforming(side, mesh);
+  }
 }
 
 TEST(AdaptiveMeshHoles, MovingAHoleIsARemoveAndAnInsert) {

@@ -6,6 +6,7 @@
 
 #include "tests/mesher/mesh_expectations.h"
 #include "tests/mesher/random_polygons.h"
+#include "tests/mesher/scene_polygons.h"
 
 #include <gtest/gtest.h>
 
@@ -188,16 +189,11 @@ TEST(MeshChecks, AnglesBelowTheBoundCountExceptAtSharperInputCorners) {
   EXPECT_EQ(checkMesh(frame, meshPolygon(frame, {1})).belowAngleBound, 0u);
 }
 
-// Thin strips from the office: a bookcase's side (a 1 cm upright with shelves 2 cm thick, in
-// metres; a grid line runs 0.6 mm from the upright) and a wall with an opening 1 cm from its
-// end. Fans alone left 6 and 2 elements below the bound.
+// Thin strips from the office: a bookcase's side (scene_polygons.h) and a wall with an opening
+// 1 cm from its end. Fans alone left 6 and 2 elements below the bound.
 TEST(Mesher, ThinStripsMeetTheBound) {
-  const std::vector<PolygonWithHoles> strips{
-      {{{5.0, 2.0}, {4.7, 2.0}, {4.7, 1.98}, {4.99, 1.98}, {4.99, 1.51}, {4.7, 1.51}, {4.7, 1.49}, {4.99, 1.49},
-        {4.99, 1.04}, {4.7, 1.04}, {4.7, 1.02}, {4.99, 1.02}, {4.99, 0.57}, {4.7, 0.57}, {4.7, 0.55}, {4.99, 0.55},
-        {4.99, 0.08}, {4.7, 0.08}, {4.7, 0.0}, {5.0, 0.0}, {5.0, 0.08}, {5.0, 1.98}},
-       {}},
-      {{{0, 5}, {0, 0}, {2.8, 0}, {2.8, 5}}, {{{0.01, 3.6}, {0.01, 4.5}, {2.05, 4.5}, {2.05, 3.6}}}}};
+  const std::vector<PolygonWithHoles> strips{test::bookcaseSide(),
+                                             {{{0, 5}, {0, 0}, {2.8, 0}, {2.8, 5}}, {{{0.01, 3.6}, {0.01, 4.5}, {2.05, 4.5}, {2.05, 3.6}}}}};
   for (const PolygonWithHoles& strip : strips) {
     const MeshCheck check = checkMesh(strip, meshPolygon(strip, {0.25}));
     test::expectValidMesh(check);
