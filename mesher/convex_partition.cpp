@@ -12,14 +12,11 @@ namespace mesher {
 
 namespace {
 
-// Sine of a turn below which a corner is a sliver or straight (as turnsLeft).
-constexpr double kMinSine = 1e-9;
-
 // Whether c lies on segment [a, b] or so close to its line, within its extent, that a chord
 // along it would graze c: chords are refused rather than trusted to rounding.
 bool touches(Vec2 a, Vec2 b, Vec2 c) {
   if (c.x < std::min(a.x, b.x) || c.x > std::max(a.x, b.x) || c.y < std::min(a.y, b.y) || c.y > std::max(a.y, b.y)) return false;
-  return std::abs(orient2(a, b, c)) <= kMinSine * glm::length(b - a) * glm::length(c - a);
+  return std::abs(orient2(a, b, c)) <= kMinTurnSine * glm::length(b - a) * glm::length(c - a);
 }
 
 bool segmentsMeet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
@@ -77,9 +74,9 @@ double ConvexPartition::partition(const std::vector<Vec2>& points, const std::ve
   length_.resize(n * n);
   for (size_t i = 0; i < n; ++i)
     for (size_t j = 0; j < n; ++j) length_[i * n + j] = glm::length(points[j] - points[i]);
-  // turnsLeft by indices, with the lengths looked up.
+  // turnsLeft by indices, with the lengths looked up (computed once per ring).
   auto turns = [&](size_t a, size_t b, size_t c) {
-    return orient2(points[a], points[b], points[c]) > kMinSine * length_[a * n + b] * length_[b * n + c];
+    return orient2(points[a], points[b], points[c]) > kMinTurnSine * length_[a * n + b] * length_[b * n + c];
   };
   constexpr double kOpen = std::numeric_limits<double>::infinity();  // a ring edge: nothing to partition
   best_.assign(n * n, Best{});

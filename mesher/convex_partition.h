@@ -14,13 +14,16 @@
 
 namespace mesher {
 
-// Whether a -> b -> c turns left by more than a sliver: the sine of the turn exceeds 1e-9 (no
-// 180-degree corners). Inline: fans test every corner they make.
+// Sine of a turn at or below which a corner is a sliver or straight.
+inline constexpr double kMinTurnSine = 1e-9;
+
+// Whether a -> b -> c turns left by more than a sliver (no 180-degree corners). Inline: fans
+// test every corner they make.
 inline bool turnsLeft(Vec2 a, Vec2 b, Vec2 c) {
-  // Squared, so no square root: turn > 1e-9 |ab| |bc| for a positive turn.
+  // Squared, so no square root: turn > kMinTurnSine |ab| |bc| for a positive turn.
   const double turn = orient2(a, b, c);
   const Vec2 ab = b - a, bc = c - b;
-  return turn > 0 && turn * turn > 1e-18 * glm::dot(ab, ab) * glm::dot(bc, bc);
+  return turn > 0 && turn * turn > kMinTurnSine * kMinTurnSine * glm::dot(ab, ab) * glm::dot(bc, bc);
 }
 inline bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return turnsLeft(a, b, c) && turnsLeft(b, c, d) && turnsLeft(c, d, a) && turnsLeft(d, a, b);

@@ -119,7 +119,7 @@ class SubdomainRemover {
   ConvexPartition partition_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound
   bool innerMayMove_ = true;  // false only within a reachesBound call that says so
-  bool firstGood_ = false;  // the search stops at the first fan that reaches the bound
+  bool firstGood_ = false;  // the search stops at the first set that reaches the bound
 };
 
 }  // namespace mesher
