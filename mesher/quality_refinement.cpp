@@ -32,6 +32,9 @@ constexpr int kDeeper = 3;
 // Rounds of splitting leaves too coarse to take a wedge (each round's balancing can make more).
 constexpr int kTakerRounds = 4;
 
+// Times the vertex leaves are looked at (the first time all, then those that splits changed).
+constexpr int kPasses = 3;
+
 }  // namespace
 
 bool QualityRefiner::reachesBound(int32_t q, bool innerMayMove) {
@@ -50,13 +53,16 @@ bool QualityRefiner::reachVertexLeaf(int32_t q) {
   // for many levels) are taken back by the caller.
   int32_t at = q;
   for (int depth = 0;; ++depth) {
-    if (splitAcross(at)) return true;
+    if (splitAcross(at)) return verified(at), true;
     if (depth == kDeeper || !tree.splitLeaf(at)) return false;
     tried_.clear();
     tree.leavesBelow(at, tried_);
     bool reached = true;
-    for (int32_t c : tried_)
-      if (tree[c].vertex >= 0 && !reachesBound(c)) reached = false, at = c;
+    for (int32_t c : tried_) {
+      if (tree[c].vertex < 0) continue;
+      if (reachesBound(c)) verified(c);
+      else reached = false, at = c;
+    }
     if (reached) return true;
   }
 }
@@ -90,20 +96,20 @@ bool QualityRefiner::splitAcross(int32_t q) {
   return false;
 }
 
-size_t QualityRefiner::refine() {
+size_t QualityRefiner::refineVertexLeaves() {
   Quadtree& tree = built_.tree;
-  const bool shallowEdges = markShallowEdges(tree.input, built_.frame.planePerTree());
   size_t splits = 0;
   seeds_.clear();
-  // The vertex leaves, in tree order: found from the vertices down in a tree large beside them,
-  // by a walk through the leaves in a small one.
-  if (tree.input.vertices.size() * 256 < tree.quadrants.size()) tree.vertexLeaves(leaves_);
-  else tree.leaves(leaves_);
   for (int32_t q : leaves_) {
-    if (tree[q].vertex < 0 || !nearASide(tree, q) || reachesBound(q)) continue;
-    const size_t mark = tree.changes.size();
+    if (!tree[q].isLeaf() || tree[q].vertex < 0 || !nearASide(tree, q)) continue;
+    if (reachesBound(q)) {
+      verified(q);
+      continue;
+    }
+    const size_t mark = tree.changes.size(), verifiedMark = verified_.size();
     if (!reachVertexLeaf(q)) {
       tree.undoChanges(mark);
+      verified_.resize(verifiedMark);
       continue;
     }
     for (size_t i = mark; i < tree.changes.size(); ++i)
@@ -111,10 +117,12 @@ size_t QualityRefiner::refine() {
     ++splits;
   }
   if (!seeds_.empty()) balanceAround(tree, seeds_);
-  // Leaves that would take a shallow wedge but are too coarse to (grown by it, their elements
-  // would be longer than the patch size, or meet much finer ones) are split, round by round as
-  // splits and their balancing make new ones.
-  if (!shallowEdges) return splits;
+  return splits;
+}
+
+size_t QualityRefiner::splitCoarseTakers() {
+  Quadtree& tree = built_.tree;
+  size_t splits = 0;
   for (int round = 0; round < kTakerRounds; ++round) {
     // Givers and takers both store the shallow edge: the leaves along those edges.
     leaves_.clear();
@@ -134,6 +142,57 @@ size_t QualityRefiner::refine() {
     }
     if (seeds_.empty()) break;
     balanceAround(tree, seeds_);
+  }
+  return splits;
+}
+
+void QualityRefiner::collectVertexLeavesChangedSince(size_t mark) {
+  const Quadtree& tree = built_.tree;
+  // Each leaf made by a split, or beside one, with the last such split.
+  touched_.clear();
+  for (size_t i = mark; i < tree.changes.size(); ++i) {
+    if (tree.changes[i].isMerge()) continue;
+    tried_.clear();
+    tree.leavesBelow(tree.changes[i].quadrant, tried_);
+    for (int32_t q : tried_) {
+      neighbors_.assign(1, q);
+      for (Side side : {Side::West, Side::East, Side::South, Side::North}) tree.neighbors(q, side, neighbors_);
+      for (int32_t n : neighbors_)
+        if (tree[n].vertex >= 0) touched_.emplace_back(n, i);
+    }
+  }
+  std::sort(touched_.begin(), touched_.end());
+  std::sort(verified_.begin(), verified_.end());
+  leaves_.clear();
+  for (size_t k = 0; k < touched_.size(); ++k) {
+    const auto [q, lastSplit] = touched_[k];
+    if (k + 1 < touched_.size() && touched_[k + 1].first == q) continue;
+    // Left out when it reached the bound after the last split that touched it.
+    const auto after = std::upper_bound(verified_.begin(), verified_.end(), std::pair{q, lastSplit});
+    if (after == verified_.end() || after->first != q) leaves_.push_back(q);
+  }
+}
+
+size_t QualityRefiner::refine() {
+  Quadtree& tree = built_.tree;
+  const bool shallowEdges = markShallowEdges(tree.input, built_.frame.planePerTree());
+  // The vertex leaves, in tree order: found from the vertices down in a tree large beside them,
+  // by a walk through the leaves in a small one.
+  if (tree.input.vertices.size() * 256 < tree.quadrants.size()) tree.vertexLeaves(leaves_);
+  else tree.leaves(leaves_);
+  size_t splits = 0;
+  verified_.clear();
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const size_t mark = tree.changes.size();
+    splits += refineVertexLeaves();
+    // Leaves that would take a shallow wedge but are too coarse to (grown by it, their elements
+    // would be longer than the patch size, or meet much finer ones) are split, round by round
+    // as splits and their balancing make new ones.
+    if (shallowEdges) splits += splitCoarseTakers();
+    if (tree.changes.size() == mark) break;
+    // A vertex leaf looked at before later splits (its own by balancing, or its neighbours', a
+    // new T-vertex on its side) may fall short now: those are looked at again.
+    collectVertexLeavesChangedSince(mark);
   }
   return splits;
 }

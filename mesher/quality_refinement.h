@@ -12,6 +12,7 @@
 #include "mesher/subdomain_removal.h"
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace mesher {
@@ -19,8 +20,9 @@ namespace mesher {
 // Splits, in a complete and balanced tree, the leaves across a side of a vertex leaf whose
 // region falls short of the bound (judged as LeafEmitter meshes it), or the vertex leaf itself,
 // when that makes it reach the bound a few levels down at most, and the coarsest leaves that
-// would take a shallow wedge (wedge_handover.h); then rebalances. Returns how many leaves were split. The refiner keeps its scratch memory
-// from polygon to polygon rebuilt into the same PolygonTree.
+// would take a shallow wedge (wedge_handover.h), each followed by rebalancing; vertex leaves that
+// later splits change are looked at again. Returns how many leaves were split. The refiner
+// keeps its scratch memory from polygon to polygon rebuilt into the same PolygonTree.
 class QualityRefiner {
  public:
   explicit QualityRefiner(PolygonTree& built) : built_(built), regions_(built) {}
@@ -34,11 +36,22 @@ class QualityRefiner {
   // Whether splitting the leaf across one side of vertex leaf q finer than q makes q reach the
   // bound; the first such split is kept, the others are taken back.
   bool splitAcross(int32_t q);
+  // The splits (then balancing) for the vertex leaves in leaves_, and the coarse takers' rounds
+  // of splits; each returns how many leaves it split.
+  size_t refineVertexLeaves();
+  size_t splitCoarseTakers();
+  // Into leaves_: the vertex leaves among those made by the splits after changes[mark] and their
+  // neighbours, in index order, but for those that reached the bound after the last such split.
+  void collectVertexLeavesChangedSince(size_t mark);
+  // Notes that vertex leaf q reaches the bound as the tree stands.
+  void verified(int32_t q) { verified_.emplace_back(q, built_.tree.changes.size()); }
 
   PolygonTree& built_;
   LeafRegionBuilder regions_;
   SubdomainRemover remover_;
-  std::vector<int32_t> leaves_, seeds_, takers_, tried_;
+  std::vector<int32_t> leaves_, seeds_, takers_, tried_, neighbors_;
+  // (leaf, changes made before it was found to reach the bound), (leaf, a split beside it).
+  std::vector<std::pair<int32_t, size_t>> verified_, touched_;
   std::vector<Vec2> ring_;
 };
 

@@ -69,6 +69,27 @@ TEST(QualityRefinement, ACornerNearASideTakesAMidpointFromAcross) {
   EXPECT_EQ(check.belowAngleBound, 0u);
 }
 
+// The hole's corner (-396.9, -171.3) meshes within the bound as the tree is first built, and falls
+// short once the splits for the other corners and for shallow wedges have put T-vertices beside
+// it: vertex leaves are looked at again after later splits.
+TEST(QualityRefinement, ACornerIsLookedAtAgainAfterSplitsBesideIt) {
+  const PolygonWithHoles polygon{
+      {{-333.63921598501474, -127.83153641546167}, {-403.84884126763853, -84.792851558933307},
+       {-470.91442159146214, -168.97130268037037}, {-397.20958034560232, -229.02610203668993}},
+      {{{-402.69761422439427, -169.38929832942119}, {-421.0422339876929, -162.22279468904196}, {-419.06069577269864, -181.17127793350494}},
+       {{-402.97328383181491, -139.7086639859603}, {-413.50413540860518, -131.35154113106486}, {-423.50531620708301, -136.61759923014785},
+        {-425.23569299124489, -143.53432115471171}, {-419.49903200156115, -152.57058007442413}, {-406.79944630274605, -151.52331442560427}},
+       {{-374.41212344830433, -168.91756824126145}, {-393.14939749009062, -162.62591596140737}, {-396.89800150559842, -171.33340616064768},
+        {-379.45528360180032, -180.62309494692187}}}};
+  PolygonTree built = buildPolygonTree(polygon, 15);
+  balance(built.tree);
+  ASSERT_TRUE(cornerLeafReachesBound(built, built.frame.toTree(polygon.holes[2][2])));
+
+  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {15}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+}
+
 // A corner a hair from a grid line stays that close to one, relatively, for more levels than
 // splitting may go: the tree's leaves are left as they were.
 TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
