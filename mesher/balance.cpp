@@ -1,5 +1,6 @@
 #include "mesher/balance.h"
 
+#include <algorithm>
 
 namespace mesher {
 
@@ -34,10 +35,17 @@ size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
 
 size_t balance(Quadtree& tree) {
   // No leaf is coarser than the uniform depth, so only leaves two levels below it can have a
-  // neighbour too coarse: the rest of a large floor need not look at its neighbours.
+  // neighbour too coarse: those the build's storage splits made. The rest of a large floor is
+  // not looked at.
   std::vector<int32_t> deep;
-  for (int32_t q : tree.leaves())
-    if (tree[q].level >= tree.uniformDepth + 2) deep.push_back(q);
+  for (int32_t q : tree.storageSplits) {
+    if (tree[q].level + 1 < tree.uniformDepth + 2) continue;
+    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c)
+      if (tree[c].isLeaf()) deep.push_back(c);
+  }
+  // In tree order: where a split leaves only outside leaves beside a coarse neighbour, that
+  // neighbour need not be split, so the order decides the tree.
+  std::sort(deep.begin(), deep.end(), [&](int32_t a, int32_t b) { return comesBefore(tree[a], tree[b]); });
   return balanceAround(tree, std::move(deep));
 }
 

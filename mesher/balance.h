@@ -16,7 +16,8 @@ namespace mesher {
 // The tree must be complete. Outside leaves take no part.
 size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds);
 
-// Balances the whole tree (as built: no leaf coarser than its uniform depth).
+// Balances the whole tree as built (buildQuadtree: no leaf coarser than its uniform depth, and
+// its storage splits listed).
 size_t balance(Quadtree& tree);
 
 }  // namespace mesher

@@ -73,25 +73,14 @@ bool rayCastInside(const QuadtreeInput& input, Vec2 p) {
 }
 
 
-size_t classifyLeaves(Quadtree& tree, size_t rayCastBelow) {
-  const std::vector<int32_t> leaves = tree.leaves();
-  auto rayCastTheRest = [&] {
-    size_t cast = 0;
-    for (int32_t q : leaves) {
-      if (tree[q].status != QuadStatus::Undefined) continue;
-      const Quadrant& leaf = tree[q];
-      const double half = static_cast<double>(tree.edgeLength(leaf)) / 2;
-      tree.quadrants[static_cast<size_t>(q)].status =
-          rayCastInside(tree.input, {leaf.x + half, leaf.y + half}) ? QuadStatus::Inside : QuadStatus::Outside;
-      ++cast;
-    }
-    return cast;
-  };
-  if (tree.input.edges.size() <= rayCastBelow) {
-    rayCastTheRest();
-    return 0;
-  }
+QuadStatus castFromCentre(const Quadtree& tree, int32_t q) {
+  const Quadrant& quad = tree[q];
+  const double half = static_cast<double>(tree.edgeLength(quad)) / 2;
+  return rayCastInside(tree.input, {quad.x + half, quad.y + half}) ? QuadStatus::Inside : QuadStatus::Outside;
+}
 
+size_t classifyLeaves(Quadtree& tree) {
+  const std::vector<int32_t> leaves = tree.leaves();
   std::vector<uint8_t> blocked(tree.quadrants.size(), 0);  // per leaf: sides an edge lies along
   std::vector<std::pair<int32_t, bool>> seeds;
   SideLyingEdges(tree, blocked, seeds);
@@ -150,7 +139,13 @@ size_t classifyLeaves(Quadtree& tree, size_t rayCastBelow) {
 
   // Whatever the fill did not reach is tested directly (a side only partly along an edge is
   // blocked whole, which can leave a leaf unreached).
-  return rayCastTheRest();
+  size_t cast = 0;
+  for (int32_t q : leaves) {
+    if (tree[q].status != QuadStatus::Undefined) continue;
+    tree.quadrants[static_cast<size_t>(q)].status = castFromCentre(tree, q);
+    ++cast;
+  }
+  return cast;
 }
 
 }  // namespace mesher

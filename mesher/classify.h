@@ -12,11 +12,16 @@ namespace mesher {
 // lying exactly along leaf sides (no leaf stores such an edge), judged by its direction. The
 // fill does not cross those edges. A leaf the fill cannot reach is tested by ray casting.
 // Returns how many leaves needed the ray cast (0 for any polygon the rules describe).
-//
-// A polygon of at most `rayCastBelow` edges skips the fill: casting a ray against a few edges
-// per leaf is cheaper than visiting every leaf's neighbours (a 261k-leaf floor of 11 edges: 90
-// against 110 ms).
-size_t classifyLeaves(Quadtree& tree, size_t rayCastBelow = 0);
+size_t classifyLeaves(Quadtree& tree);
+
+// A polygon of at most kFewEdges edges is classified by ray casting as the build makes its
+// leaves (buildQuadtree) instead: a ray against a few edges is cheaper than the fill's visits
+// to every leaf's neighbours (a 261k-leaf floor of 11 edges: 90 against 110 ms), and one ray
+// serves every leaf below a square no edge crosses.
+constexpr size_t kFewEdges = 32;
+
+// Inside or Outside by a ray from the centre of quadrant q.
+QuadStatus castFromCentre(const Quadtree& tree, int32_t q);
 
 // Even-odd test of a point against the polygon's active edges (tree coordinates); the point must
 // not lie on an edge.

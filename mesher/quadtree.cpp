@@ -145,6 +145,7 @@ bool Quadtree::splitLeaf(int32_t q) {
   const Quadrant old = (*this)[q];
   addChildren(q);
   if (complete) changes.push_back({q, old});
+  else if (old.level >= uniformDepth) storageSplits.push_back(q);
   const int32_t first = (*this)[q].firstChild;
   for (int32_t c = first; c < first + 4; ++c) {
     if (old.vertex >= 0 && holdsPoint(c, input.vertices[static_cast<size_t>(old.vertex)]))
@@ -189,6 +190,12 @@ bool Quadtree::insideOf(const Quadrant& leaf, Vec2 p) const {
     return orient2(input.vertices[i], input.vertices[j], p) > 0;
   }
   return leaf.status == QuadStatus::Inside;
+}
+
+bool Quadtree::crossedByAnyEdge(int32_t q) const {
+  for (uint32_t e = 0; e < input.edges.size(); ++e)
+    if (input.active(e) && crossedBy(q, e)) return true;
+  return false;
 }
 
 void Quadtree::edgesThrough(int32_t q, std::vector<uint32_t>& out) const {
@@ -483,20 +490,41 @@ bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
   tree.quadrants.clear();
   tree.quadrants.reserve(size_t{4} << (2 * std::min(depth, 10)));
   tree.quadrants.push_back(Quadrant{});
+  tree.uniformDepth = depth;
+  tree.storageSplits.clear();
 
-  // Phases: the uniform tree of the patch size, then vertices, then edges (5.2).
-  for (size_t q = 0; q < tree.quadrants.size(); ++q)
-    if (tree.quadrants[q].level < depth) tree.splitLeaf(static_cast<int32_t>(q));
+  // Phases: the uniform tree of the patch size, then vertices, then edges (5.2). A polygon of few
+  // edges has its leaves classified as they are made (classify.h): a square no edge crosses
+  // hands its side down; a leaf of the uniform tree that one crosses, or a leaf split to store,
+  // casts its own ray (edges stored make it Boundary).
+  const bool fewEdges = tree.input.edges.size() <= kFewEdges;
+  auto sideOf = [&](int32_t q) {
+    return tree[q].level < depth && tree.crossedByAnyEdge(q) ? QuadStatus::Undefined : castFromCentre(tree, q);
+  };
+  if (fewEdges) tree.quadrants[0].status = sideOf(0);
+  for (size_t i = 0; i < tree.quadrants.size(); ++i) {
+    const auto q = static_cast<int32_t>(i);
+    if (tree[q].level >= depth) continue;
+    const QuadStatus side = tree[q].status;
+    tree.splitLeaf(q);
+    if (!fewEdges) continue;
+    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c)
+      tree.quadrants[static_cast<size_t>(c)].status = side == QuadStatus::Undefined ? sideOf(c) : side;
+  }
   for (uint32_t v = 0; v < tree.input.vertices.size(); ++v)
     if (!tree.insertVertex(v)) return false;
   for (uint32_t e = 0; e < tree.input.edges.size(); ++e)
     if (!tree.insertEdge(0, e)) return false;
 
-  // Classification: leaves holding edges are boundary (set as they were stored), the others
-  // lie wholly on one side.
-  classifyLeaves(tree, 32);
+  // Leaves holding edges are boundary (set as they were stored), the others lie wholly on one side.
+  if (fewEdges) {
+    for (int32_t q : tree.storageSplits)
+      for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c)
+        if (tree[c].isLeaf() && tree[c].status == QuadStatus::Undefined) tree.quadrants[static_cast<size_t>(c)].status = castFromCentre(tree, c);
+  } else {
+    classifyLeaves(tree);
+  }
   tree.complete = true;
-  tree.uniformDepth = depth;
   return true;
 }
 

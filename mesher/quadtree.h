@@ -54,6 +54,10 @@ class Quadtree {
   QuadtreeInput input;
   bool complete = false;  // every vertex and edge stored and every leaf classified
   int uniformDepth = 0;   // lambda of 5.2: no leaf is coarser (no merge goes above it)
+  // The leaves the build split below the uniform depth to store a vertex or an edge, in the order
+  // split: only their children can be finer than the uniform tree. As built: later splits and
+  // merges leave it as it is.
+  std::vector<int32_t> storageSplits;
   double gridSnap = 1e-6;  // the frame's: computed points this close to a grid line lie on it
 
   int64_t edgeLength(const Quadrant& q) const { return int64_t{1} << (maxDepth - q.level); }
@@ -83,6 +87,8 @@ class Quadtree {
   // children in constant time each, instead of climbing from every leaf.
   template <typename Visit>
   void forEachLeafWithAdjacent(Visit visit) const;
+  // Whether an active input edge passes through quadrant q's open square (as stored edges do).
+  bool crossedByAnyEdge(int32_t q) const;
   // Whether point p of leaf q's closed square lies inside the polygon, from the leaf's own
   // vertex and edges (its status when it holds none). p must not lie on a stored edge.
   bool insideAt(int32_t q, Vec2 p) const;

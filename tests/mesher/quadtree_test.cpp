@@ -239,5 +239,31 @@ TEST(Classification, FloodFillReachesEveryLeaf) {
   }
 }
 
+// A polygon of few edges is classified as its tree is built, a ray cast once per square no edge
+// crosses; every leaf ends as a ray from its own centre finds it.
+TEST(Classification, FewEdgesAsBuiltAgreeWithARayPerLeaf) {
+  std::mt19937 random(29);
+  size_t judged = 0, polygons = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const PolygonTree built = buildPolygonTree(trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial), 1 + trial % 20);
+    const Quadtree& tree = built.tree;
+    if (tree.input.edges.size() > kFewEdges) continue;
+    ++polygons;
+    for (int32_t q : tree.leaves()) {
+      const Quadrant& leaf = tree[q];
+      if (leaf.edgeCount > 0) {
+        ASSERT_EQ(leaf.status, QuadStatus::Boundary) << "leaf " << q;
+        continue;
+      }
+      ASSERT_EQ(leaf.status, castFromCentre(tree, q)) << "leaf " << q;
+      ++judged;
+    }
+  }
+  EXPECT_GT(polygons, 100u);
+  EXPECT_GT(judged, 10000u);
+}
+
+
 }  // namespace
 }  // namespace mesher
