@@ -6,28 +6,27 @@ namespace mesher {
 
 size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
   size_t splits = 0;
-  std::vector<int32_t> across;
   while (!seeds.empty()) {
     const int32_t q = seeds.back();
     seeds.pop_back();
     const Quadrant& leaf = tree[q];
     if (!leaf.isLeaf() || leaf.status == QuadStatus::Outside) continue;
     for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
-      across.clear();
-      tree.neighbors(q, side, across);
-      for (int32_t n : across) {
-        const Quadrant& neighbor = tree[n];
-        if (neighbor.status == QuadStatus::Outside || neighbor.level >= tree[q].level - 1) continue;
-        const size_t mark = tree.changes.size();
-        if (!tree.splitLeaf(n)) {
-          tree.undoChanges(mark);
-          continue;
-        }
-        tree.quadrants[static_cast<size_t>(n)].forced = true;
-        tree.leavesBelow(n, seeds);
-        seeds.push_back(q);  // its neighbour there may still be too coarse
-        ++splits;
+      // Only a coarser neighbour can be too coarse, and it is the one leaf across the side
+      // (finer ones are the children of a node there).
+      const int32_t n = tree.adjacent(q, side);
+      if (n < 0) continue;
+      const Quadrant& neighbor = tree[n];
+      if (!neighbor.isLeaf() || neighbor.status == QuadStatus::Outside || neighbor.level >= tree[q].level - 1) continue;
+      const size_t mark = tree.changes.size();
+      if (!tree.splitLeaf(n)) {
+        tree.undoChanges(mark);
+        continue;
       }
+      tree.quadrants[static_cast<size_t>(n)].forced = true;
+      tree.leavesBelow(n, seeds);
+      seeds.push_back(q);  // its neighbour there may still be too coarse
+      ++splits;
     }
   }
   return splits;

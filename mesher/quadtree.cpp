@@ -502,9 +502,9 @@ bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
     return tree[q].level < depth && tree.crossedByAnyEdge(q) ? QuadStatus::Undefined : castFromCentre(tree, q);
   };
   if (fewEdges) tree.quadrants[0].status = sideOf(0);
-  for (size_t i = 0; i < tree.quadrants.size(); ++i) {
+  // Made level by level, so the first quadrant at the uniform depth ends the phase.
+  for (size_t i = 0; i < tree.quadrants.size() && tree.quadrants[i].level < depth; ++i) {
     const auto q = static_cast<int32_t>(i);
-    if (tree[q].level >= depth) continue;
     const QuadStatus side = tree[q].status;
     tree.splitLeaf(q);
     if (!fewEdges) continue;
