@@ -34,17 +34,17 @@ size_t balanceAround(Quadtree& tree, std::vector<int32_t> seeds) {
 
 size_t balance(Quadtree& tree) {
   // No leaf is coarser than the uniform depth, so only leaves two levels below it can have a
-  // neighbour too coarse: those the build's storage splits made. The rest of a large floor is
-  // not looked at.
-  std::vector<int32_t> deep;
-  for (int32_t q : tree.storageSplits) {
-    if (tree[q].level + 1 < tree.uniformDepth + 2) continue;
-    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c)
-      if (tree[c].isLeaf()) deep.push_back(c);
-  }
-  // In tree order: where a split leaves only outside leaves beside a coarse neighbour, that
+  // neighbour too coarse: those below the leaves of the uniform tree that the build split to
+  // store a vertex or an edge. The rest of a large floor is not looked at. They are taken in
+  // tree order: where a split leaves only outside leaves beside a coarse neighbour, that
   // neighbour need not be split, so the order decides the tree.
-  std::sort(deep.begin(), deep.end(), [&](int32_t a, int32_t b) { return comesBefore(tree[a], tree[b]); });
+  std::vector<int32_t> split;
+  for (int32_t q : tree.storageSplits)
+    if (tree[q].level == tree.uniformDepth) split.push_back(q);
+  std::sort(split.begin(), split.end(), [&](int32_t a, int32_t b) { return comesBefore(tree[a], tree[b]); });
+  std::vector<int32_t> deep;
+  for (int32_t q : split) tree.leavesBelow(q, deep);
+  deep.erase(std::remove_if(deep.begin(), deep.end(), [&](int32_t q) { return tree[q].level < tree.uniformDepth + 2; }), deep.end());
   return balanceAround(tree, std::move(deep));
 }
 
