@@ -72,7 +72,6 @@ bool rayCastInside(const QuadtreeInput& input, Vec2 p) {
   return inside;
 }
 
-
 QuadStatus castFromCentre(const Quadtree& tree, int32_t q) {
   const Quadrant& quad = tree[q];
   const double half = static_cast<double>(tree.edgeLength(quad)) / 2;
