@@ -48,6 +48,24 @@ TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
   EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
 }
 
+// A reflex corner a hair (a five-hundredth of its leaf) above the leaf's lower side stays that
+// close to the grid line however far its leaf is split, but twice as close relatively at each
+// level up: the corner's leaf is split six levels and more, its surroundings graded down with it,
+// until the strip meshes within the bound. (Three levels left an element of 0.19 degrees.)
+TEST(QualityRefinement, ACornerAHairFromASideIsSplitUntilTheStripMeshes) {
+  const PolygonWithHoles polygon = notchCornerIn(0.6, 0.002);
+  const PolygonTree built = buildMeshTree(polygon, 4);
+  const Vec2 corner = built.tree.input.vertices[3];
+  EXPECT_GE(built.tree[built.tree.leafAt(corner)].level, built.tree.uniformDepth + 6);
+  EXPECT_TRUE(cornerLeafReachesBound(built, corner));
+
+  const Mesh mesh = meshPolygon(polygon, {4});
+  const MeshCheck check = checkMesh(polygon, mesh);
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
 // The Cornell box's floor with the tall block's footprint square to the walls: its corner
 // (343, 332) lies 4.5 units from the side of a leaf 35 units on edge, and the strip between
 // them leaves that side no element within the bound. Split, the leaf would put the corner a
