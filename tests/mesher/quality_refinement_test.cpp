@@ -108,6 +108,24 @@ TEST(QualityRefinement, ACornerIsLookedAtAgainAfterSplitsBesideIt) {
   EXPECT_EQ(check.belowAngleBound, 0u);
 }
 
+// A wedge handed over up to the giver's own vertex leaves the giver running from the vertex
+// straight to a grid point on its side (wedge_handover.h). The hole's corner (-331.5, 81.2) lies
+// 0.6% of its leaf from the leaf's east side, so the ring's corner at that grid point had 13
+// degrees, which the ring's meshing cannot help; smaller leaves put a grid point nearer the
+// vertex, and the refiner now takes such a corner as falling short.
+TEST(QualityRefinement, AGridPointCornerLeftByAHandoverIsRefined) {
+  const PolygonWithHoles polygon{
+      {{-314.06653419918081, 72.796216570603605}, {-328.02319670798249, 92.026289331847735}, {-345.64318118465178, 90.39366181577374},
+       {-355.87392248884208, 69.222904700149712}, {-339.94878762470051, 51.786476243340132}, {-321.91098407001641, 55.846730829283302}},
+      {{{-327.51578984015947, 66.137488491473306}, {-334.68733377604451, 62.528984810670188}, {-343.20049564503074, 66.917952292071789},
+        {-343.90069026806481, 76.270858120719822}, {-340.96261237428263, 79.94705600821797}, {-331.45650864726468, 81.237286007626594},
+        {-325.81542676417826, 75.146130793982195}}}};
+  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {42}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
 // A corner a hair from a grid line stays that close to one, relatively, for more levels than
 // splitting may go: the tree's leaves are left as they were.
 TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
