@@ -15,19 +15,15 @@ namespace mesher {
 
 namespace {
 
-// How near a side of its leaf, relative to the leaf's size, a vertex may leave a strip too thin
-// to mesh within the bound.
-constexpr double kNear = 1.0 / 3;
-
-// Whether leaf q's vertex lies within kNear of the leaf's size of a side, not on it: only
-// then is there a strip between them thin enough to fail (elsewhere the check would cost about
-// as much as meshing the leaf).
-bool nearASide(const Quadtree& tree, int32_t q) {
+// Whether leaf q's vertex lies inside the leaf's square, off its border: only then is it looked
+// at (a look costs about as much as meshing the leaf, and in 2,000 random polygons no vertex on
+// its leaf's border fell short). A vertex near a side leaves a strip too thin to mesh; one
+// further in can fall short too, where shallow edges leave sharp wedges beside it.
+bool offTheBorder(const Quadtree& tree, int32_t q) {
   const Quadrant& leaf = tree[q];
   const double s = static_cast<double>(tree.edgeLength(leaf));
   const Vec2 v = (tree.input.vertices[static_cast<size_t>(leaf.vertex)] - Vec2{static_cast<double>(leaf.x), static_cast<double>(leaf.y)}) / s;
-  const double nearest = std::min({v.x, v.y, 1 - v.x, 1 - v.y});
-  return nearest > 0 && nearest < kNear;
+  return v.x > 0 && v.y > 0 && v.x < 1 && v.y < 1;
 }
 
 // How many levels below its leaf a vertex may be taken. A vertex a hair from a grid line stays
@@ -127,7 +123,7 @@ size_t QualityRefiner::refineVertexLeaves() {
   size_t splits = 0;
   seeds_.clear();
   for (int32_t q : leaves_) {
-    if (!tree[q].isLeaf() || tree[q].vertex < 0 || !nearASide(tree, q)) continue;
+    if (!tree[q].isLeaf() || tree[q].vertex < 0 || !offTheBorder(tree, q)) continue;
     if (reachesBound(q)) {
       verified(q);
       continue;

@@ -126,6 +126,25 @@ TEST(QualityRefinement, AGridPointCornerLeftByAHandoverIsRefined) {
   EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
 }
 
+// The hole's corner (155.6, 436.2) lies 39% of its leaf from the nearest side, where no thin
+// strip can be, yet the shallow edges beside it left its ring an element of 7 degrees: every
+// vertex inside its leaf is looked at, not only those near a side.
+TEST(QualityRefinement, AVertexWellInsideItsLeafIsLookedAtToo) {
+  const PolygonWithHoles polygon{
+      {{233.20445492694779, 477.58930919158252}, {185.40976269258314, 532.08863970859579}, {108.32375952247315, 505.09476136531237},
+       {112.71135539348529, 421.51528487547102}, {202.12517301148384, 407.95256997498313}},
+      {{{158.222634693446, 457.26821948111416}, {140.11342991501189, 460.79859484755553}, {132.46025719651129, 447.22988050626725},
+        {155.60390526581057, 436.20143756206954}},
+       {{197.43143939556433, 451.99977536737987}, {184.13503133389906, 462.51761189560574}, {170.95085761468971, 455.47994451510806},
+        {169.65794118308528, 443.22075415025813}, {176.87661049241206, 434.95537432050742}, {192.78801587759946, 436.79803455603582}},
+       {{197.18695792420672, 489.18959223990612}, {173.28836075832896, 494.84471465837584}, {169.15576161777287, 481.48442955756161},
+        {192.23206778180662, 472.77681243528724}}}};
+  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {43}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
 // A corner a hair from a grid line stays that close to one, relatively, for more levels than
 // splitting may go: the tree's leaves are left as they were.
 TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
