@@ -31,6 +31,13 @@ double aspectRatio(Vec2 a, Vec2 b, Vec2 c) {
   return 2 * inscribed / circumscribed;
 }
 
+// A quadrilateral's shape: the better of its two splits along a diagonal, each judged by its
+// worse triangle (a square: 0.83). Judged by its corner triangles instead, a quad with a corner
+// of nearly 180 degrees (a triangle with a point on one side) would count as degenerate.
+double aspectRatio(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return std::max(std::min(aspectRatio(a, b, c), aspectRatio(a, c, d)), std::min(aspectRatio(b, c, d), aspectRatio(b, d, a)));
+}
+
 // Per input vertex (outer ring, then holes): whether the polygon's inside angle there is below
 // kAngleBoundDeg. The inside lies left of a counter-clockwise outer ring and right of it for a
 // hole, whichever way the rings are given.
@@ -130,9 +137,10 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
       const uint32_t corner = e[(k + 1) % n];
       belowBound |= angle < kAngleBoundDeg && !(corner < sharpCorner.size() && sharpCorner[corner]);
       for (size_t j = 0; j < n; ++j) diameter = std::max(diameter, glm::length(mesh.vertices[e[j]] - a));
-      check.smallestAspectRatio = std::min(check.smallestAspectRatio, aspectRatio(a, b, c));
       if (++edgeUse[edgeKey(e[k], e[(k + 1) % n])] > 1) ++check.repeatedEdges;
     }
+    const Vec2 a = mesh.vertices[e[0]], b = mesh.vertices[e[1]], c = mesh.vertices[e[2]];
+    check.smallestAspectRatio = std::min(check.smallestAspectRatio, n == 3 ? aspectRatio(a, b, c) : aspectRatio(a, b, c, mesh.vertices[e[3]]));
     check.elementArea += area;
     check.belowAngleBound += belowBound;
     check.largestDiameter = std::max(check.largestDiameter, diameter);

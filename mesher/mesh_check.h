@@ -19,7 +19,8 @@ struct MeshCheck {
   // Elements with an angle below kAngleBoundDeg other than at an input corner that is sharper.
   size_t belowAngleBound = 0;
   // The thesis' shape measure, inscribed over circumscribed radius, scaled so an equilateral
-  // triangle has 1 (2r/R); a quad counts as its worst corner triangle (a square: 0.83).
+  // triangle has 1 (2r/R); a quad counts as the better of its two splits along a diagonal, each
+  // as its worse triangle (a square: 0.83).
   double smallestAspectRatio = 1;
 };
 

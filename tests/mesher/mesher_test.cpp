@@ -136,6 +136,18 @@ TEST(MeshChecks, AspectRatioIsOneForEquilateralAndFallsForSlivers) {
   thin.vertices = sliver.outer;
   thin.elements = {{0, 1, 2, Mesh::kNone}};
   EXPECT_LT(checkMesh(sliver, thin).smallestAspectRatio, 0.05);
+  // A quad with a corner of nearly 180 degrees is a good triangle with a point on one side; a
+  // long thin quad is a sliver whichever way it is split.
+  const PolygonWithHoles flatCorner{{{0, 0}, {1, 0}, {2, 0.005}, {1, 1.7}}, {}};
+  Mesh bent;
+  bent.vertices = flatCorner.outer;
+  bent.elements = {{0, 1, 2, 3}};
+  EXPECT_GT(checkMesh(flatCorner, bent).smallestAspectRatio, 0.5);
+  const PolygonWithHoles strip{{{0, 0}, {1, 0}, {1, 0.01}, {0, 0.01}}, {}};
+  Mesh long_;
+  long_.vertices = strip.outer;
+  long_.elements = {{0, 1, 2, 3}};
+  EXPECT_LT(checkMesh(strip, long_).smallestAspectRatio, 0.05);
 }
 
 // A Mesher carries memory from polygon to polygon, nothing else: each mesh equals a fresh one,
