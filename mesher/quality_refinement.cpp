@@ -39,20 +39,32 @@ constexpr int kTakerRounds = 4;
 // Times the vertex leaves are looked at (the first time all, then those that splits changed).
 constexpr int kPasses = 3;
 
-// Whether a handed-over ring has a corner sharper than the bound at a point of its border that
-// is no input vertex. A wedge handed over up to the giver's vertex leaves the giver running
-// from the vertex straight to a grid point M on its side (wedge_handover.h): the corner at M is
-// as sharp as the vertex is close to that side, relatively, and no meshing of the ring can
-// help it; a smaller leaf has a grid point nearer the vertex.
-bool sharpCornerOnBorder(const LeafRegion& region, Vec2 planePerTree) {
+// Whether the corner at b of the path a -> b -> c (counter-clockwise, inside on the left) is
+// convex and sharper than the bound, in the plane.
+bool sharperThanBound(Vec2 a, Vec2 b, Vec2 c, Vec2 planePerTree) {
   static const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
+  const Vec2 u = (a - b) * planePerTree, v = (c - b) * planePerTree;
+  const double dot = glm::dot(u, v), turn = v.x * u.y - v.y * u.x;  // > 0: a convex corner
+  return turn > 0 && dot > 0 && turn < kTanBound * dot;
+}
+
+// Whether a handed-over ring has a corner sharper than the bound that the polygon does not
+// make. A wedge handed over up to the giver's vertex V runs the giver from V straight to a grid
+// point M on its side, and the taker from M to V (wedge_handover.h): the corner at M is as sharp
+// as V is close to that side, relatively, and the one at V can be sharper than the polygon's
+// own corner there. No meshing of the ring can help them; a smaller leaf has a grid point nearer
+// the vertex. (Crossings on the path are left alone: their corners are the edges' own.)
+bool sharpCornerOfItsOwn(const LeafRegion& region, const QuadtreeInput& input, Vec2 planePerTree) {
   const std::vector<RegionPoint>& ring = region.ring;
   const size_t n = ring.size();
-  for (size_t i = region.boundary.pathPoints; i < n; ++i) {
-    if (ring[i].inputVertex >= 0) continue;
-    const Vec2 u = (ring[(i + n - 1) % n].at - ring[i].at) * planePerTree, v = (ring[(i + 1) % n].at - ring[i].at) * planePerTree;
-    const double dot = glm::dot(u, v), turn = v.x * u.y - v.y * u.x;  // > 0: a convex corner
-    if (turn > 0 && dot > 0 && turn < kTanBound * dot) return true;
+  for (size_t i = 0; i < n; ++i) {
+    const int32_t v = ring[i].inputVertex;
+    if (v < 0 && i < region.boundary.pathPoints) continue;
+    if (!sharperThanBound(ring[(i + n - 1) % n].at, ring[i].at, ring[(i + 1) % n].at, planePerTree)) continue;
+    if (v < 0) return true;
+    const auto at = static_cast<size_t>(v);
+    const Vec2 before = input.vertices[input.edges[input.edgeInto[at]][0]], after = input.vertices[input.edges[input.edgeOutOf[at]][1]];
+    if (!sharperThanBound(before, input.vertices[at], after, planePerTree)) return true;
   }
   return false;
 }
@@ -62,7 +74,7 @@ bool sharpCornerOnBorder(const LeafRegion& region, Vec2 planePerTree) {
 bool QualityRefiner::reachesBound(int32_t q, bool innerMayMove) {
   const LeafRegion& region = regions_.build(q);
   if (region.ring.empty()) return true;
-  if (region.handedOver && sharpCornerOnBorder(region, built_.frame.planePerTree())) return false;
+  if (region.handedOver && sharpCornerOfItsOwn(region, built_.tree.input, built_.frame.planePerTree())) return false;
   ring_.clear();
   for (const RegionPoint& p : region.ring) ring_.push_back(p.at);
   return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary, innerMayMove);

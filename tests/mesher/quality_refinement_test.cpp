@@ -126,6 +126,28 @@ TEST(QualityRefinement, AGridPointCornerLeftByAHandoverIsRefined) {
   EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
 }
 
+// The same handover gives the leaf across a corner at the vertex itself, between the vertex's
+// other edge and the line from it to the grid point: here 5 degrees where the polygon's corner
+// (21.1, -2.8) has 124. Such a corner, sharper in the ring than in the polygon, counts as falling
+// short too.
+TEST(QualityRefinement, AVertexCornerSharperInItsRingThanInThePolygonIsRefined) {
+  const PolygonWithHoles polygon{
+      {{18.69522813214131, 1.6049949436743911}, {15.172714530498331, 9.5075233395777801}, {22.370507010160598, 26.360144235316383},
+       {7.34276572519064, 26.946348526554118}, {-0.2033018961070141, 27.057677133574156}, {-6.7539461909702343, 12.22389371086399},
+       {-17.299245500442531, 14.286386286959463}, {-32.000798224199677, 9.9054267440405876}, {-20.391497851618357, -0.53473979997398158},
+       {-24.949282909312704, -14.44971228840391}, {-7.0090454721531561, -12.544819109604035}, {-3.0946279611656196, -32.215150475881856},
+       {6.2882368486799098, -30.947807940024799}, {20.278180470085182, -26.93947912182982}, {16.289587152424964, -12.354747204838317},
+       {21.148065555882891, -2.777097994854985}},
+      {{{6.0321046445856616, 0.53119542620525162}, {4.6141455107213831, 1.361373889535501}, {3.533324393138594, -0.62986109570155957},
+        {5.1432363607588032, -1.334039727976037}},
+       {{-0.82183176931115831, 0.43125166659059044}, {-2.4672159733874803, 1.3271624576225924}, {-3.5051157892131251, -0.070072329750833898},
+        {-2.0107859229656371, -1.3822617574504754}}}};
+  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {12}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
 // The hole's corner (155.6, 436.2) lies 39% of its leaf from the nearest side, where no thin
 // strip can be, yet the shallow edges beside it left its ring an element of 7 degrees: every
 // vertex inside its leaf is looked at, not only those near a side.
