@@ -3,6 +3,7 @@
 // mesh at once and again for the leaves a local refine or coarsen touches.
 #pragma once
 
+#include "mesher/huge_page_allocator.h"
 #include "mesher/leaf_region.h"
 #include "mesher/quadtree.h"
 #include "mesher/subdomain_removal.h"
@@ -91,7 +92,7 @@ class LeafEmitter {
   // Per quadrant, the ids on its east and north sides: south-east corner, east midpoint,
   // north-east corner, north midpoint, north-west corner (0xffffffff: none there). Written for
   // every leaf emitAll meets that is not Outside, read only for such leaves it has passed.
-  std::vector<std::array<uint32_t, 5>> eastAndNorth_;
+  std::vector<std::array<uint32_t, 5>, HugePageAllocator<std::array<uint32_t, 5>>> eastAndNorth_;
 };
 
 }  // namespace mesher

@@ -3,6 +3,7 @@
 // under the decomposition rules of section 5.2 and are classified inside, outside or boundary.
 #pragma once
 
+#include "mesher/huge_page_allocator.h"
 #include "mesher/tree_frame.h"
 #include "mesher/triangulate.h"
 
@@ -50,7 +51,7 @@ enum class Side : uint8_t { West, East, South, North };
 class Quadtree {
  public:
   int maxDepth = 0;
-  std::vector<Quadrant> quadrants;  // [0] is the root
+  std::vector<Quadrant, HugePageAllocator<Quadrant>> quadrants;  // [0] is the root
   QuadtreeInput input;
   bool complete = false;  // every vertex and edge stored and every leaf classified
   int uniformDepth = 0;   // lambda of 5.2: no leaf is coarser (no merge goes above it)
