@@ -34,6 +34,14 @@ bool cornerLeafReachesBound(const PolygonTree& built, Vec2 corner) {
 }
 bool cornerLeafReachesBound(const PolygonTree& built) { return cornerLeafReachesBound(built, built.tree.input.vertices[3]); }
 
+// The polygon meshes validly, with no element angle below the bound but at sharper input corners.
+void expectMeshedWithinTheBound(const PolygonWithHoles& polygon, double patchSize) {
+  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {patchSize}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+}
+
 TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
   const PolygonWithHoles polygon = notchCornerIn(0.8667, 0.1333);
   PolygonTree built = buildPolygonTree(polygon, 4);
@@ -42,15 +50,12 @@ TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
   EXPECT_GT(refineForQuality(built), 0u);
   EXPECT_TRUE(cornerLeafReachesBound(built));
 
-  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {4}));
-  test::expectValidMesh(check);
-  EXPECT_EQ(check.belowAngleBound, 0u);
-  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+  expectMeshedWithinTheBound(polygon, 4);
 }
 
 // A reflex corner a hair (a five-hundredth of its leaf) above the leaf's lower side stays that
-// close to the grid line however far its leaf is split, but twice as close relatively at each
-// level up: the corner's leaf is split six levels and more, its surroundings graded down with it,
+// close to the grid line however far its leaf is split, but twice as far, relatively, at each
+// level down: the corner's leaf is split six levels and more, its surroundings graded with it,
 // until the strip meshes within the bound. (Three levels left an element of 0.19 degrees.)
 TEST(QualityRefinement, ACornerAHairFromASideIsSplitUntilTheStripMeshes) {
   const PolygonWithHoles polygon = notchCornerIn(0.6, 0.002);
@@ -59,11 +64,7 @@ TEST(QualityRefinement, ACornerAHairFromASideIsSplitUntilTheStripMeshes) {
   EXPECT_GE(built.tree[built.tree.leafAt(corner)].level, built.tree.uniformDepth + 6);
   EXPECT_TRUE(cornerLeafReachesBound(built, corner));
 
-  const Mesh mesh = meshPolygon(polygon, {4});
-  const MeshCheck check = checkMesh(polygon, mesh);
-  test::expectValidMesh(check);
-  EXPECT_EQ(check.belowAngleBound, 0u);
-  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+  expectMeshedWithinTheBound(polygon, 4);
 }
 
 // The Cornell box's floor with the tall block's footprint square to the walls: its corner
@@ -120,10 +121,7 @@ TEST(QualityRefinement, AGridPointCornerLeftByAHandoverIsRefined) {
       {{{-327.51578984015947, 66.137488491473306}, {-334.68733377604451, 62.528984810670188}, {-343.20049564503074, 66.917952292071789},
         {-343.90069026806481, 76.270858120719822}, {-340.96261237428263, 79.94705600821797}, {-331.45650864726468, 81.237286007626594},
         {-325.81542676417826, 75.146130793982195}}}};
-  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {42}));
-  test::expectValidMesh(check);
-  EXPECT_EQ(check.belowAngleBound, 0u);
-  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+  expectMeshedWithinTheBound(polygon, 42);
 }
 
 // The same handover gives the leaf across a corner at the vertex itself, between the vertex's
@@ -142,10 +140,7 @@ TEST(QualityRefinement, AVertexCornerSharperInItsRingThanInThePolygonIsRefined) 
         {5.1432363607588032, -1.334039727976037}},
        {{-0.82183176931115831, 0.43125166659059044}, {-2.4672159733874803, 1.3271624576225924}, {-3.5051157892131251, -0.070072329750833898},
         {-2.0107859229656371, -1.3822617574504754}}}};
-  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {12}));
-  test::expectValidMesh(check);
-  EXPECT_EQ(check.belowAngleBound, 0u);
-  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+  expectMeshedWithinTheBound(polygon, 12);
 }
 
 // The hole's corner (155.6, 436.2) lies 39% of its leaf from the nearest side, where no thin
@@ -161,10 +156,7 @@ TEST(QualityRefinement, AVertexWellInsideItsLeafIsLookedAtToo) {
         {169.65794118308528, 443.22075415025813}, {176.87661049241206, 434.95537432050742}, {192.78801587759946, 436.79803455603582}},
        {{197.18695792420672, 489.18959223990612}, {173.28836075832896, 494.84471465837584}, {169.15576161777287, 481.48442955756161},
         {192.23206778180662, 472.77681243528724}}}};
-  const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {43}));
-  test::expectValidMesh(check);
-  EXPECT_EQ(check.belowAngleBound, 0u);
-  EXPECT_GE(check.smallestAngleDeg, kAngleBoundDeg);
+  expectMeshedWithinTheBound(polygon, 43);
 }
 
 // A corner a hair from a grid line stays that close to one, relatively, for more levels than
