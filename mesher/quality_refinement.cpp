@@ -29,9 +29,9 @@ bool offTheBorder(const Quadtree& tree, int32_t q) {
 // How many levels below its leaf a vertex may be taken. A vertex a hair from a grid line stays
 // that close to the line, but each level doubles its distance relative to the leaf: twelve take
 // a ten-thousandth of the leaf to about a third. The leaves around are balanced down with it,
-// so the mesh is graded there: random polygons mesh 3-5% more elements than with three levels,
-// and 70-85% fewer fall short of the bound (of those left, the last few slivers of 0.02 degrees
-// needed more than eight levels).
+// so the mesh is graded there: random polygons mesh 3-6% more elements than with three levels,
+// and most of those that fell short reach the bound (the last slivers, of 0.02 degrees, needed
+// more than eight levels).
 constexpr int kDeeper = 12;
 
 // Rounds of splitting leaves too coarse to take a wedge (each round's balancing can make more).

@@ -18,8 +18,9 @@
 namespace mesher {
 
 // Splits, in a complete and balanced tree, the leaves across a side of a vertex leaf whose
-// region falls short of the bound (judged as LeafEmitter meshes it), or the vertex leaf itself,
-// when that makes it reach the bound a few levels down at most, and the coarsest leaves that
+// region falls short of the bound (judged as LeafEmitter meshes it; a handed-over region's
+// corners sharper than the polygon's own count too), or the vertex leaf itself,
+// when that makes it reach the bound (up to twelve levels down), and the coarsest leaves that
 // would take a shallow wedge (wedge_handover.h), each followed by rebalancing; vertex leaves that
 // later splits change are looked at again. Returns how many leaves were split. The refiner
 // keeps its scratch memory from polygon to polygon rebuilt into the same PolygonTree.

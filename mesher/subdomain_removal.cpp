@@ -335,9 +335,9 @@ size_t SubdomainRemover::augment(const std::vector<Vec2>& ring, const RingBounda
       if (j == i || j == next || length2 == 0 || (j == n && !inner)) continue;
       const Vec2 ap = (j < n ? ring[j] : *inner) * shapeScale - a;
       const double t = glm::dot(ap, ab) / length2;
-      // A foot as close to an end of the edge as a third of the point's distance from it would
-      // leave a sliver between them; one nearer the end than that is fine, however near (a
-      // crossing a hair from a T-vertex wants a tiny triangle), but not on it.
+      // A foot nearer an end of the edge than a third of the point's distance from it would
+      // leave a sliver between them. Beyond that it may be as near the end as it comes (a
+      // crossing a hair from a T-vertex wants a tiny triangle cut off), but not on it.
       const double fromEnd = std::min(t, 1 - t) * std::sqrt(length2), distance = std::abs(ap.x * ab.y - ap.y * ab.x) / std::sqrt(length2);
       if (fromEnd > 0.34 * distance && fromEnd > 1e-6 * std::sqrt(length2)) feet.push_back(t);
     }
