@@ -30,9 +30,21 @@ bool inTree(const Quadtree& tree, int32_t q) {
 AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
     : built_(buildMeshTree(polygon, settings.patchSize)) {
   handsOver_ = std::find(built_.tree.input.shallow.begin(), built_.tree.input.shallow.end(), 1) != built_.tree.input.shallow.end();
-  const std::vector<int32_t> leaves = built_.tree.leaves();
+  std::vector<int32_t> leaves = built_.tree.leaves(), shortLeaves;
   emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
   MeshDelta ignored;
+  emitter_->collectShortLeaves(&shortLeaves);
+  for (int32_t q : leaves) emitLeaf(q, ignored);
+  emitter_->collectShortLeaves(nullptr);
+  // As Mesher meshes: leaves without a vertex that fell short of the angle bound are split,
+  // and the tree is meshed again from the start.
+  if (shortLeaves.empty() || QualityRefiner(built_).splitShortLeaves(shortLeaves) == 0) return;
+  built_.tree.changes.clear();
+  slots_.clear();
+  leafSlots_.clear();
+  leafRings_.clear();
+  built_.tree.leaves(leaves);
+  emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
   for (int32_t q : leaves) emitLeaf(q, ignored);
 }
 

@@ -40,6 +40,10 @@ class LeafEmitter {
   const std::vector<uint32_t>& ringIds(int32_t q);
   const std::vector<uint32_t>& lastRingIds() const { return ringIds_; }
 
+  // While set, emit() appends to `leaves` the leaves holding no input vertex whose regions it
+  // could not mesh within the angle bound (QualityRefiner::splitShortLeaves takes them).
+  void collectShortLeaves(std::vector<int32_t>* leaves) { shortLeaves_ = leaves; }
+
   // Registers input vertices added to the tree after the emitter was made (a hole inserted):
   // plane[i] is the exact plane position of tree input vertex `first + i`.
   void addInputVertices(uint32_t first, const std::vector<Vec2>& plane);
@@ -67,6 +71,7 @@ class LeafEmitter {
   std::vector<uint32_t> ringIds_;
   SubdomainRemover subdomains_;
   std::vector<RingElement> pieces_;
+  std::vector<int32_t>* shortLeaves_ = nullptr;
   // Interior squares differ only in which sides carry a T-vertex: their subdomains (the
   // templates of 5.3) are worked out once per pattern. They depend only on the frame's stretch
   // (angles are judged in true proportions), so they are worked out on the unit square and kept

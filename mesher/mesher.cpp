@@ -22,6 +22,7 @@ struct Mesher::State {
   PolygonTree built;
   std::optional<LeafEmitter> emitter;  // bound to `built`, made on first use
   std::optional<QualityRefiner> refiner;  // the same
+  std::vector<int32_t> shortLeaves;        // LeafEmitter::collectShortLeaves
 };
 
 Mesher::Mesher() : state_(std::make_unique<State>()) {}
@@ -51,7 +52,18 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   }
   out.elements.clear();
   out.elements.reserve(leaves * 2);
+  s.shortLeaves.clear();
+  s.emitter->collectShortLeaves(&s.shortLeaves);
   s.emitter->emitAll(out.elements);
+  s.emitter->collectShortLeaves(nullptr);
+  // Leaves without a vertex whose regions fell short of the angle bound (rare: none in the
+  // shipped scenes) are split, and the tree meshed again.
+  if (!s.shortLeaves.empty() && s.refiner->splitShortLeaves(s.shortLeaves) > 0) {
+    s.built.tree.changes.clear();
+    s.emitter->reset(polygon, (3 * s.built.tree.quadrants.size() + 1) / 4);
+    out.elements.clear();
+    s.emitter->emitAll(out.elements);
+  }
   s.emitter->swapVertices(out.vertices);
 }
 

@@ -40,6 +40,10 @@ constexpr int kTakerRounds = 4;
 // Times the vertex leaves are looked at (the first time all, then those that splits changed).
 constexpr int kPasses = 3;
 
+// How many levels below itself a short leaf without a vertex may be split (one did in every
+// random polygon that had one).
+constexpr int kShortLeafLevels = 3;
+
 // Whether the corner at b of the path a -> b -> c (counter-clockwise, inside on the left) is
 // convex and sharper than the bound, in the plane.
 bool sharperThanBound(Vec2 a, Vec2 b, Vec2 c, Vec2 planePerTree) {
@@ -229,6 +233,33 @@ size_t QualityRefiner::refine() {
     // new T-vertex on its side) may fall short now: those are looked at again.
     collectVertexLeavesChangedSince(mark);
   }
+  return splits;
+}
+
+size_t QualityRefiner::splitShortLeaves(const std::vector<int32_t>& leaves) {
+  Quadtree& tree = built_.tree;
+  size_t splits = 0;
+  seeds_.clear();
+  for (int32_t q : leaves) {
+    if (!tree[q].isLeaf() || tree[q].vertex >= 0) continue;
+    const size_t mark = tree.changes.size();
+    bool reached = false;
+    for (int32_t at = q, level = 0; !reached && level < kShortLeafLevels && tree.splitLeaf(at); ++level) {
+      tried_.clear();
+      tree.leavesBelow(at, tried_);
+      reached = true;
+      for (int32_t c : tried_)
+        if (!reachesBound(c)) reached = false, at = c;
+    }
+    if (!reached) {
+      tree.undoChanges(mark);
+      continue;
+    }
+    for (size_t i = mark; i < tree.changes.size(); ++i)
+      if (!tree.changes[i].isMerge()) tree.leavesBelow(tree.changes[i].quadrant, seeds_);
+    ++splits;
+  }
+  if (!seeds_.empty()) balanceAround(tree, seeds_);
   return splits;
 }
 

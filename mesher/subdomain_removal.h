@@ -51,6 +51,9 @@ class SubdomainRemover {
   const std::vector<Vec2>& points() const { return points_; }
   // Which ring point points()[i] is, or -1 for the inner point or an added one.
   int ringIndexOf(size_t i) const { return origin_[i]; }
+  // Whether the last mesh() call's elements reach kAngleBoundDeg at every corner (or the ring's
+  // own corner there, when that is sharper).
+  bool reachedBound() const { return score_ >= 1; }
   // Whether mesh() would give elements that reach kAngleBoundDeg at every corner (or the ring's
   // own corner there, when that is sharper); quicker than mesh(), as it stops at the first set
   // that does. `innerMayMove` false leaves out the dearest step, moving the inner point.

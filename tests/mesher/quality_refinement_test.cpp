@@ -2,6 +2,7 @@
 // bound get a smaller leaf, or a finer leaf across a side, when that helps, and only then.
 #include "mesher/quality_refinement.h"
 
+#include "mesher/adaptive_mesh.h"
 #include "mesher/balance.h"
 #include "mesher/mesh_check.h"
 #include "tests/mesher/mesh_expectations.h"
@@ -157,6 +158,25 @@ TEST(QualityRefinement, AVertexWellInsideItsLeafIsLookedAtToo) {
        {{197.18695792420672, 489.18959223990612}, {173.28836075832896, 494.84471465837584}, {169.15576161777287, 481.48442955756161},
         {192.23206778180662, 472.77681243528724}}}};
   expectMeshedWithinTheBound(polygon, 43);
+}
+
+// A leaf holding no vertex, cut by one edge below a T-vertex on its west side, left its region a
+// long four-sided strip that no meshing brought to the bound (17 degrees). Leaves without a
+// vertex are not looked at beforehand; the mesher splits those whose meshing fell short and
+// meshes again, and an adaptive mesh starts as that same mesh.
+TEST(QualityRefinement, ALeafWithoutAVertexThatFallsShortIsSplit) {
+  const PolygonWithHoles polygon{
+      {{19.838411291130505, 2.6896953562542576}, {18.639515499988196, 28.813334206185615}, {3.8520634040991983, 14.496988954084419},
+       {-7.4988203734972458, 14.182917872172855}, {-33.181677571037618, -0.017206254900960616}, {-35.005509712670495, -19.959287410408333},
+       {-32.69001443441347, -37.989203253964064}, {-11.573936114465768, -42.143932703299242}, {8.573608650127861, -28.825129544325051},
+       {27.607735811932084, -15.82168962107334}},
+      {}};
+  expectMeshedWithinTheBound(polygon, 6);
+  const AdaptiveMesh adaptive(polygon, {6});
+  const Mesh whole = meshPolygon(polygon, {6});
+  EXPECT_EQ(adaptive.vertices(), whole.vertices);
+  EXPECT_EQ(adaptive.elements().size(), whole.elements.size());
+  EXPECT_EQ(checkMesh(polygon, adaptive.snapshot()).belowAngleBound, 0u);
 }
 
 // A corner a hair from a grid line stays that close to one, relatively, for more levels than
