@@ -41,6 +41,7 @@ AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& 
   if (shortLeaves.empty() || QualityRefiner(built_).splitShortLeaves(shortLeaves) == 0) return;
   built_.tree.changes.clear();
   slots_.clear();
+  freeSlots_.clear();
   leafSlots_.clear();
   leafRings_.clear();
   built_.tree.leaves(leaves);

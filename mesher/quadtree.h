@@ -56,8 +56,8 @@ class Quadtree {
   bool complete = false;  // every vertex and edge stored and every leaf classified
   int uniformDepth = 0;   // lambda of 5.2: no leaf is coarser (no merge goes above it)
   // The leaves the build split to store a vertex or an edge (those of the uniform tree and any
-  // below them), in the order split: only their children are finer than the uniform tree. As built: later splits and
-  // merges leave it as it is.
+  // below them), in the order split: only their children are finer than the uniform tree. As
+  // built: later splits and merges leave it as it is.
   std::vector<int32_t> storageSplits;
   double gridSnap = 1e-6;  // the frame's: computed points this close to a grid line lie on it
 

@@ -135,6 +135,12 @@ bool QualityRefiner::splitAcross(int32_t q) {
   return false;
 }
 
+void QualityRefiner::seedLeavesSplitSince(size_t mark) {
+  const Quadtree& tree = built_.tree;
+  for (size_t i = mark; i < tree.changes.size(); ++i)
+    if (!tree.changes[i].isMerge()) tree.leavesBelow(tree.changes[i].quadrant, seeds_);
+}
+
 size_t QualityRefiner::refineVertexLeaves() {
   Quadtree& tree = built_.tree;
   size_t splits = 0;
@@ -151,8 +157,7 @@ size_t QualityRefiner::refineVertexLeaves() {
       verified_.resize(verifiedMark);
       continue;
     }
-    for (size_t i = mark; i < tree.changes.size(); ++i)
-      if (!tree.changes[i].isMerge()) tree.leavesBelow(tree.changes[i].quadrant, seeds_);
+    seedLeavesSplitSince(mark);
     ++splits;
   }
   if (!seeds_.empty()) balanceAround(tree, seeds_);
@@ -255,8 +260,7 @@ size_t QualityRefiner::splitShortLeaves(const std::vector<int32_t>& leaves) {
       tree.undoChanges(mark);
       continue;
     }
-    for (size_t i = mark; i < tree.changes.size(); ++i)
-      if (!tree.changes[i].isMerge()) tree.leavesBelow(tree.changes[i].quadrant, seeds_);
+    seedLeavesSplitSince(mark);
     ++splits;
   }
   if (!seeds_.empty()) balanceAround(tree, seeds_);

@@ -51,6 +51,8 @@ class QualityRefiner {
   // Into leaves_: the vertex leaves among those made by the splits after changes[mark] and their
   // neighbours, in index order, but for those that reached the bound after the last such split.
   void collectVertexLeavesChangedSince(size_t mark);
+  // Appends to seeds_ the leaves that the splits after changes[mark] made, to be balanced around.
+  void seedLeavesSplitSince(size_t mark);
   // Notes that vertex leaf q reaches the bound as the tree stands.
   void verified(int32_t q) { verified_.emplace_back(q, built_.tree.changes.size()); }
 
