@@ -38,9 +38,8 @@ bool inCone(Vec2 prev, Vec2 at, Vec2 next, Vec2 to) {
 
 }  // namespace
 
-bool ConvexPartition::isDiagonal(size_t i, size_t j) const {
-  const std::vector<Vec2>& p = *points_;
-  const size_t n = n_;
+bool isDiagonal(const std::vector<Vec2>& p, size_t i, size_t j) {
+  const size_t n = p.size();
   if (!inCone(p[(i + n - 1) % n], p[i], p[(i + 1) % n], p[j]) || !inCone(p[(j + n - 1) % n], p[j], p[(j + 1) % n], p[i]))
     return false;
   for (size_t k = 0; k < n; ++k) {
@@ -60,13 +59,12 @@ double ConvexPartition::partition(const std::vector<Vec2>& points, const std::ve
                                   const std::vector<double>& reach, std::vector<RingElement>& out) {
   const size_t n = points.size();
   if (n < 3) return -1;
-  points_ = &points;
   n_ = n;
   chord_.assign(n * n, 0);
   for (size_t i = 0; i < n; ++i) {
     chord_[i * n + (i + 1) % n] = chord_[((i + 1) % n) * n + i] = 1;
     for (size_t j = i + 2; j < n; ++j)
-      if (!(i == 0 && j == n - 1) && isDiagonal(i, j)) chord_[i * n + j] = chord_[j * n + i] = 1;
+      if (!(i == 0 && j == n - 1) && isDiagonal(points, i, j)) chord_[i * n + j] = chord_[j * n + i] = 1;
   }
   auto corner = [&](size_t prev, size_t at, size_t next) {
     return cornerAngleDeg(shaped[prev], shaped[at], shaped[next]) / reach[at];

@@ -29,6 +29,10 @@ inline bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return turnsLeft(a, b, c) && turnsLeft(b, c, d) && turnsLeft(c, d, a) && turnsLeft(d, a, b);
 }
 
+// Whether the chord between ring points i and j (not neighbours) runs inside the simple
+// counter-clockwise ring, touching it nowhere else: a diagonal that cuts it in two.
+bool isDiagonal(const std::vector<Vec2>& ring, size_t i, size_t j);
+
 // Three or four indices into a ring, counter-clockwise.
 struct RingElement {
   std::array<uint32_t, 4> v{};
@@ -54,10 +58,8 @@ class ConvexPartition {
     // The piece on the sub-ring's closing chord: its corners between the chord's ends.
     uint32_t a = 0, b = 0;  // b == a: a triangle
   };
-  bool isDiagonal(size_t i, size_t j) const;
   void emit(size_t i, size_t j, std::vector<RingElement>& out) const;
 
-  const std::vector<Vec2>* points_ = nullptr;
   size_t n_ = 0;
   std::vector<uint8_t> chord_;  // n x n: ring edge or inner diagonal
   std::vector<Best> best_;      // n x n, for i < j: the sub-ring i, i + 1, ..., j

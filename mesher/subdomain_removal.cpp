@@ -3,6 +3,7 @@
 #include "mesher/fast_atan2.h"
 #include "mesher/triangulate.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -278,6 +279,9 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
     }
   }
   if (!firstGood_) partition();
+  // The dearest step, for the few rings all else leaves short. Not when only asked whether some
+  // set reaches the bound: the quality refiner splits such leaves first, which costs fewer elements.
+  if (!firstGood_ && score_ < 1) cutAndFan(ring, shapeScale);
   if (!best_.empty()) {
     out.insert(out.end(), best_.begin(), best_.end());
     return;
@@ -302,6 +306,89 @@ double SubdomainRemover::load(Solution& from) {
   points_.swap(from.points);
   origin_.swap(from.origin);
   return from.score;
+}
+
+double SubdomainRemover::fanSide(const std::vector<Vec2>& side, Vec2 shapeScale, Solution& into) {
+  save(into, attempt(side, -1, nullptr, shapeScale, nullptr));
+  if (into.score >= 1 && into.elements.size() <= (side.size() - 1) / 2) return into.score;  // none has fewer
+  Vec2 low = side[0], high = side[0];
+  for (const Vec2& p : side) low = glm::min(low, p), high = glm::max(high, p);
+  constexpr int kGrid = 8;
+  for (int gx = 0; gx < kGrid; ++gx)
+    for (int gy = 0; gy < kGrid; ++gy) {
+      const Vec2 at = low + (high - low) * Vec2{(gx + 0.5) / kGrid, (gy + 0.5) / kGrid};
+      if (!containsPoint(side, at)) continue;
+      const double s = attempt(side, -1, &at, shapeScale, nullptr, true);
+      const bool better = s >= 1 ? into.score < 1 || best_.size() < into.elements.size() : s > into.score;
+      if (better) save(into, s);
+    }
+  return into.score;
+}
+
+void SubdomainRemover::cutAndFan(const std::vector<Vec2>& ring, Vec2 shapeScale) {
+  const size_t n = ring.size();
+  save(stage_, score_);
+  std::vector<RingElement> elements;
+  std::vector<Vec2> points;
+  std::vector<int> origin;
+  size_t fewest = std::numeric_limits<size_t>::max();
+  // Appends a side's fan to elements and points, its point k being the ring's firstPoint + k.
+  auto add = [&](const Solution& side, size_t firstPoint) {
+    std::vector<uint32_t> index(side.points.size());
+    for (size_t k = 0; k < side.points.size(); ++k) {
+      if (side.origin[k] >= 0) {
+        index[k] = static_cast<uint32_t>((firstPoint + static_cast<size_t>(side.origin[k])) % n);
+        continue;
+      }
+      index[k] = static_cast<uint32_t>(points.size());
+      points.push_back(side.points[k]);
+      origin.push_back(-1);
+    }
+    for (RingElement e : side.elements) {
+      for (uint8_t k = 0; k < e.count; ++k) e.v[k] = index[e.v[k]];
+      elements.push_back(e);
+    }
+  };
+  auto angle = [&](size_t prev, size_t at, size_t next) {
+    return cornerAngleDeg(ring[prev] * shapeScale, ring[at] * shapeScale, ring[next] * shapeScale);
+  };
+  // i == j: no cut, the whole ring around a point of its own.
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i; j < n; ++j) {
+      const bool cut = j != i;
+      if (cut && (j < i + 2 || (i == 0 && j == n - 1) || !isDiagonal(ring, i, j))) continue;
+      if (!cut && i > 0) continue;
+      // A cut must not make a corner sharper than the bound.
+      if (cut && std::min({angle(j, i, i + 1), angle(j - 1, j, i), angle(i, j, (j + 1) % n), angle((i + n - 1) % n, i, j)}) <
+                     kAngleBoundDeg)
+        continue;
+      const size_t sizes[2] = {cut ? j - i + 1 : n, n - (j - i) + 1};
+      size_t count = 0;
+      bool reached = true;
+      for (int s = 0; s < (cut ? 2 : 1) && reached; ++s) {
+        side_.clear();
+        const size_t first = s == 0 ? i : j;
+        for (size_t k = 0; k < sizes[s]; ++k) side_.push_back(ring[(first + k) % n]);
+        reached = fanSide(side_, shapeScale, cutSides_[s]) >= 1;
+        count += cutSides_[s].elements.size();
+      }
+      if (!reached || count >= fewest) continue;
+      fewest = count;
+      elements.clear();
+      points.assign(ring.begin(), ring.end());
+      origin.resize(n);
+      for (size_t k = 0; k < n; ++k) origin[k] = static_cast<int>(k);
+      add(cutSides_[0], i);
+      if (cut) add(cutSides_[1], j);
+    }
+  if (fewest == std::numeric_limits<size_t>::max()) {
+    score_ = load(stage_);
+    return;
+  }
+  best_.swap(elements);
+  points_.swap(points);
+  origin_.swap(origin);
+  score_ = 1;
 }
 
 bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,

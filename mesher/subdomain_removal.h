@@ -2,7 +2,7 @@
 // triangles that all share a hinge vertex, quadrilaterals preferred. Interior squares use the
 // same procedure over every hinge, which yields the templates of 5.3. Beyond the thesis, a
 // region no such fan meshes within the angle bound takes points on its boundary, another inner
-// point, or pieces around several points.
+// point, pieces around several points, or a cut in two with a point of its own in each side.
 #pragma once
 
 #include "mesher/convex_partition.h"
@@ -97,6 +97,15 @@ class SubdomainRemover {
   };
   void save(Solution& to, double score) const;
   double load(Solution& from);
+  // Cuts the ring along one diagonal, or not at all, and meshes each side by a fan from one of
+  // its points or around a point of its own inside it, tried on a grid. For rings whose reflex
+  // corner lies so near a leaf side, where no point may be added, that no fan or partition of
+  // the ring's points reaches the bound. Takes the fewest elements that reach it (into best_,
+  // points_, origin_ and score_); leaves all as it was when none does.
+  void cutAndFan(const std::vector<Vec2>& ring, Vec2 shapeScale);
+  // The best fan of `side` (a ring) from its points or around a grid point inside it, into
+  // `into`; returns its score.
+  double fanSide(const std::vector<Vec2>& side, Vec2 shapeScale, Solution& into);
   // Scales points_' first n (a ring) to true proportions into shaped_, and works out what
   // each corner can reach (reach_, tanReach_).
   void shape(size_t n, Vec2 shapeScale);
@@ -118,6 +127,8 @@ class SubdomainRemover {
   std::vector<RingElement> trial_, best_, unused_;
   std::vector<Vec2> candidates_;
   Solution plain_, augmented_, stage_;  // set aside: the plain ring's, the best with feet, a stage's
+  Solution cutSides_[2], sideTrial_;     // cutAndFan's: the two sides of a cut, a side's fan tried
+  std::vector<Vec2> side_;
   std::vector<Vec2> ringOnly_;
   ConvexPartition partition_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound

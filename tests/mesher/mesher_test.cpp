@@ -20,7 +20,6 @@ namespace {
 // Elements meshed and, of them, those below the angle bound (other than at sharper input corners).
 struct Quality {
   size_t elements = 0, belowAngleBound = 0;
-  double share() const { return static_cast<double>(belowAngleBound) / static_cast<double>(elements); }
 };
 
 void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize, Quality* quality = nullptr,
@@ -33,21 +32,14 @@ void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize, Quality* 
   if (quality) quality->elements += mesh.elements.size(), quality->belowAngleBound += c.belowAngleBound;
 }
 
-// What is left below the angle bound in random polygons, 2 elements in the 2,000 polygons: the
-// rings of two vertex leaves that neither splits nor meshing bring to the bound. Wedges where an edge crosses a grid line at under 18.4 degrees are
-// handed across the line (wedge_handover_test.cpp); thin strips take points on the
-// boundary and pieces around several points (convex_partition_test.cpp). Measured 0.0008%
-// (convex with holes) and none (concave) of the elements; 0.001% and 0.0003% before leaves
-// without a vertex that fell short were split, 0.002% and 0.001% when vertex leaves
-// were split eight levels at most, 0.003% and 0.004% before points on
-// the boundary could sit within a thousandth of an edge's end, 0.003% and 0.009% before vertex
-// corners sharper in a handed-over ring than in the polygon counted, 0.004% and 0.011% when only
-// vertices within a third of their leaf from a side were looked at, 0.012% and 0.014% before grid
-// point corners left by handovers counted as falling short, 0.08% and 0.05% when vertex leaves
-// were split three levels at most, 0.19% and 0.09% before vertex leaves were looked at again
-// after later splits, 0.59% and 0.42% with fans alone, 1.9% and 1.8% before wedges were handed
-// over, 3.3% and 2.6% before vertex leaves were split for quality.
-constexpr double kBelowBoundShare = 0.00002;
+// No element of the 2,000 random polygons below the angle bound, other than at sharper input
+// corners: wedges where an edge crosses a grid line at under 18.4 degrees are handed across the
+// line (wedge_handover_test.cpp), thin strips take points on the boundary and pieces around
+// several points (convex_partition_test.cpp), and a reflex corner near a closed side a cut and a
+// point of its own (subdomain_removal_test.cpp). The share below it was 0.0008% (convex with
+// holes) and none (concave) before that cut, 0.08% and 0.05% when vertex leaves were split three
+// levels at most, 0.59% and 0.42% with fans alone, 3.3% and 2.6% before vertex leaves were split
+// for quality.
 
 TEST(Mesher, ARectangleBecomesQuads) {
   const PolygonWithHoles rectangle{{{3, 2}, {35, 2}, {35, 14}, {3, 14}}, {}};
@@ -73,7 +65,7 @@ TEST(Mesher, RandomPolygonsWithHoles) {
     const PolygonWithHoles polygon = test::randomPolygonWithHoles(random, trial);
     expectGoodMesh(polygon, 5 + trial % 40, &quality);
   }
-  EXPECT_LE(quality.share(), kBelowBoundShare);
+  EXPECT_EQ(quality.belowAngleBound, 0u) << "of " << quality.elements << " elements";
 }
 
 Ring2 regularPolygon(Vec2 center, double radius, int sides, double turnDeg) {
@@ -93,7 +85,7 @@ TEST(Mesher, RandomConcavePolygons) {
     const PolygonWithHoles polygon = test::randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10);
     expectGoodMesh(polygon, 2 + trial % 30, &quality);
   }
-  EXPECT_LE(quality.share(), kBelowBoundShare);
+  EXPECT_EQ(quality.belowAngleBound, 0u) << "of " << quality.elements << " elements";
 }
 
 // Turned inputs put vertices a rounding error off grid lines and edges a hair past corners.

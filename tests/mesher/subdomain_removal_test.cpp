@@ -16,6 +16,25 @@ double cornerAngleDeg(Vec2 before, Vec2 at, Vec2 after) {
   return std::atan2(std::abs(u.x * v.y - u.y * v.x), glm::dot(u, v)) * 180 / std::numbers::pi;
 }
 
+struct Measured {
+  double area = 0, smallestAngle = 180;
+  bool convex = true;
+};
+
+// The elements' total area, their smallest angle in true proportions, and whether each is
+// strictly convex and counter-clockwise.
+Measured measure(const std::vector<RingElement>& elements, const std::vector<Vec2>& points, Vec2 scale) {
+  Measured m;
+  for (const RingElement& e : elements)
+    for (uint8_t k = 0; k < e.count; ++k) {
+      const Vec2 a = points[e.v[k]], b = points[e.v[(k + 1) % e.count]], c = points[e.v[(k + 2) % e.count]];
+      m.area += 0.5 * (a.x * b.y - b.x * a.y);
+      m.smallestAngle = std::min(m.smallestAngle, cornerAngleDeg(a * scale, b * scale, c * scale));
+      m.convex = m.convex && (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x) > 0;
+    }
+  return m;
+}
+
 // An edge cuts the north-west corner off a leaf of 65,536 tree units (stretched 1.145 times
 // along y in the plane, as in a random polygon that fell short) and crosses its west side 32
 // units below the T-vertex in the side's middle: an element with both as corners has a tiny
@@ -33,17 +52,43 @@ TEST(SubdomainRemoval, APointOnTheBoundaryCutsOffATinyCornerWhole) {
 
   std::vector<RingElement> elements;
   remover.mesh(ring, 1, &inner, scale, elements, &boundary);
-  const std::vector<Vec2>& points = remover.points();
-  double area = 0, smallest = 180;
-  for (const RingElement& e : elements) {
-    for (uint8_t k = 0; k < e.count; ++k) {
-      const Vec2 a = points[e.v[k]], b = points[e.v[(k + 1) % e.count]], c = points[e.v[(k + 2) % e.count]];
-      area += 0.5 * (a.x * b.y - b.x * a.y);
-      smallest = std::min(smallest, cornerAngleDeg(a * scale, b * scale, c * scale));
-    }
+  const Measured m = measure(elements, remover.points(), scale);
+  EXPECT_GE(m.smallestAngle, kAngleBoundDeg);
+  EXPECT_NEAR(m.area, 0.5 * ring[1].x * (ring[1].y - ring[0].y), 1e-6 * m.area);  // the triangle the ring is
+}
+
+// An input edge enters a leaf of 32,768 tree units through its east side, 5% above the south-east
+// corner, turns at a vertex 12% from the west side and leaves through the north side: a
+// reflex corner so near a closed side that every chord from it to the west side's ends, and
+// every fan of the ring's points, feet on the edges and one inner point, leaves an angle
+// below the bound (10.5 degrees at best; a random polygon's ring). Cut along the chord from the
+// vertex to the north-west corner, the rest fans around a point of its own inside the leaf.
+TEST(SubdomainRemoval, AReflexCornerNearAClosedSideIsCutAndFannedAroundAPointOfItsOwn) {
+  const std::vector<Vec2> ring{{655360, 525905.50350682996}, {626397.49567451118, 546217.00681842561},
+                               {627489.21875071758, 557056},  {622592, 557056},
+                               {622592, 524288},              {655360, 524288}};
+  RingBoundary boundary;
+  boundary.pathPoints = 3;  // the two input edges; the leaf's sides have leaves inside across them
+  boundary.x0 = 622592, boundary.y0 = 524288, boundary.size = 32768;
+  const Vec2 inner{633358.77218781947, 534297.92275087617};
+  const Vec2 scale{0.00013169688143235163, 0.00012325572267858409};
+  SubdomainRemover remover;
+  std::vector<RingElement> elements;
+  remover.mesh(ring, 1, &inner, scale, elements, &boundary);
+  EXPECT_TRUE(remover.reachedBound());
+  const Measured m = measure(elements, remover.points(), scale);
+  EXPECT_GE(m.smallestAngle, kAngleBoundDeg);
+  EXPECT_TRUE(m.convex);
+  double ringArea = 0;
+  for (size_t i = 0; i < ring.size(); ++i) ringArea += 0.5 * (ring[i].x * ring[(i + 1) % ring.size()].y - ring[(i + 1) % ring.size()].x * ring[i].y);
+  EXPECT_NEAR(m.area, ringArea, 1e-9 * ringArea);
+  // Points of its own lie strictly inside the leaf: on a side they would be T-vertices.
+  for (size_t i = 0; i < remover.points().size(); ++i) {
+    if (remover.ringIndexOf(i) >= 0) continue;
+    const Vec2 p = remover.points()[i];
+    EXPECT_TRUE(p.x > boundary.x0 && p.x < boundary.x0 + boundary.size && p.y > boundary.y0 && p.y < boundary.y0 + boundary.size)
+        << p.x << ", " << p.y;
   }
-  EXPECT_GE(smallest, kAngleBoundDeg);
-  EXPECT_NEAR(area, 0.5 * ring[1].x * (ring[1].y - ring[0].y), 1e-6 * area);  // the triangle the ring is
 }
 
 }  // namespace
