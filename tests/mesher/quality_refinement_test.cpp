@@ -68,6 +68,16 @@ TEST(QualityRefinement, ACornerAHairFromASideIsSplitUntilTheStripMeshes) {
   expectMeshedWithinTheBound(polygon, 4);
 }
 
+// A random polygon with holes (the 20th of seed 2002) with a reflex corner 0.003% of its leaf
+// from the leaf's west side: its leaf is split more than twelve levels. (Twelve at most left
+// elements of 0 and 1.6 degrees there.)
+TEST(QualityRefinement, ACornerAHairFromASideMaySplitMoreThanTwelveLevels) {
+  std::mt19937 random(2002);
+  PolygonWithHoles polygon;
+  for (int trial = 0; trial <= 19; ++trial) polygon = test::randomPolygonWithHoles(random, trial);
+  expectMeshedWithinTheBound(polygon, 24);
+}
+
 // The Cornell box's floor with the tall block's footprint square to the walls: its corner
 // (343, 332) lies 4.5 units from the side of a leaf 35 units on edge, and the strip between
 // them leaves that side no element within the bound. Split, the leaf would put the corner a
@@ -108,6 +118,16 @@ TEST(QualityRefinement, ACornerIsLookedAtAgainAfterSplitsBesideIt) {
   const MeshCheck check = checkMesh(polygon, meshPolygon(polygon, {15}));
   test::expectValidMesh(check);
   EXPECT_EQ(check.belowAngleBound, 0u);
+}
+
+// A random polygon with eight holes (the 492nd of seed 2010) whose vertex leaves are split in
+// six passes, each pass's splits changing leaves beside vertices looked at before. With three
+// passes at most, a corner 1.2% of its leaf from a side was left with an element of 1 degree.
+TEST(QualityRefinement, VertexLeavesAreLookedAtAgainUntilNoSplitChangesThem) {
+  std::mt19937 random(2010);
+  PolygonWithHoles polygon;
+  for (int trial = 0; trial <= 491; ++trial) polygon = test::randomPolygonWithHoles(random, trial);
+  expectMeshedWithinTheBound(polygon, 16);
 }
 
 // A wedge handed over up to the giver's own vertex leaves the giver running from the vertex
