@@ -42,6 +42,9 @@ constexpr int kTakerRounds = 4;
 // changed one (three left some short).
 constexpr int kPasses = 10;
 
+// The smallest leaf a deeper tree may have, over the polygon's largest coordinate.
+constexpr double kFinestLeafOverCoordinates = 1e-8;
+
 // How many levels below itself a short leaf without a vertex may be split (one did in every
 // random polygon that had one).
 constexpr int kShortLeafLevels = 3;
@@ -95,7 +98,11 @@ bool QualityRefiner::reachVertexLeaf(int32_t q) {
   int32_t at = q;
   for (int depth = 0;; ++depth) {
     if (splitAcross(at)) return verified(at), true;
-    if (depth == kDeeper || !tree.splitLeaf(at)) return false;
+    if (depth == kDeeper) return false;
+    if (!tree.splitLeaf(at)) {
+      shortAtDeepestLevel_ = true;
+      return false;
+    }
     tried_.clear();
     tree.leavesBelow(at, tried_);
     bool reached = true;
@@ -228,6 +235,7 @@ size_t QualityRefiner::refine() {
   else tree.leaves(leaves_);
   size_t splits = 0;
   verified_.clear();
+  shortAtDeepestLevel_ = false;
   for (int pass = 0; pass < kPasses; ++pass) {
     const size_t mark = tree.changes.size();
     splits += refineVertexLeaves();
@@ -273,10 +281,24 @@ size_t refineForQuality(PolygonTree& built) { return QualityRefiner(built).refin
 
 void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
                    std::optional<QualityRefiner>& refiner) {
-  buildPolygonTree(polygon, patchSize, into);
-  balance(into.tree);
-  if (!refiner) refiner.emplace(into);
-  refiner->refine();
+  // A vertex leaf that could not be split far enough, the tree being as deep as it goes, gets a
+  // tree 8 levels deeper, while its finest leaves stay well above the rounding of the plane's
+  // coordinates (smaller, the elements' corners would turn by rounding).
+  double largest = 0;
+  for (const Vec2& p : polygon.outer) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  int maxDepth = -1;
+  for (int deeper = 0;; deeper += 8) {
+    buildPolygonTree(polygon, patchSize, into, deeper);
+    if (into.tree.maxDepth <= maxDepth) continue;  // the vertices needed this depth anyway: tried
+    maxDepth = into.tree.maxDepth;
+    balance(into.tree);
+    if (!refiner) refiner.emplace(into);
+    refiner->refine();
+    const Vec2 finestDeeper = into.frame.planePerTree() / 256.0;
+    if (!refiner->shortAtDeepestLevel() || maxDepth + 8 > kDeepestTree ||
+        std::min(finestDeeper.x, finestDeeper.y) < kFinestLeafOverCoordinates * largest)
+      break;
+  }
   into.tree.changes.clear();
 }
 

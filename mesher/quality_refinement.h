@@ -35,6 +35,9 @@ class QualityRefiner {
   // kitchen 12% more meshing): the mesher meshes, and meshes again after these splits. Returns
   // how many leaves were split.
   size_t splitShortLeaves(const std::vector<int32_t>& leaves);
+  // Whether the last refine() left a vertex leaf short of the bound because the tree allows no
+  // deeper split.
+  bool shortAtDeepestLevel() const { return shortAtDeepestLevel_; }
 
  private:
   bool reachesBound(int32_t q, bool innerMayMove = true);
@@ -63,6 +66,7 @@ class QualityRefiner {
   // (leaf, changes made before it was found to reach the bound), (leaf, a split beside it).
   std::vector<std::pair<int32_t, size_t>> verified_, touched_;
   std::vector<Vec2> ring_;
+  bool shortAtDeepestLevel_ = false;
 };
 
 // QualityRefiner(built).refine().

@@ -78,6 +78,18 @@ TEST(QualityRefinement, ACornerAHairFromASideMaySplitMoreThanTwelveLevels) {
   expectMeshedWithinTheBound(polygon, 24);
 }
 
+// A random polygon with holes (the 360th of seed 2016) whose vertices close together need a
+// tree 16 levels below the patch size: a reflex corner 2% of its leaf from a side there is as
+// deep as that tree goes. The mesher builds a tree 8 levels deeper, and the corner's leaf is
+// split further. (Elements of 0.2 to 9 degrees were left there.)
+TEST(QualityRefinement, ACornerAtTheDeepestLevelGetsADeeperTree) {
+  std::mt19937 random(2016);
+  PolygonWithHoles polygon;
+  for (int trial = 0; trial <= 359; ++trial) polygon = test::randomPolygonWithHoles(random, trial);
+  EXPECT_GT(buildMeshTree(polygon, 44).tree.maxDepth, buildPolygonTree(polygon, 44).tree.maxDepth);
+  expectMeshedWithinTheBound(polygon, 44);
+}
+
 // The Cornell box's floor with the tall block's footprint square to the walls: its corner
 // (343, 332) lies 4.5 units from the side of a leaf 35 units on edge, and the strip between
 // them leaves that side no element within the bound. Split, the leaf would put the corner a
