@@ -95,7 +95,9 @@ class Quadtree {
   bool insideAt(int32_t q, Vec2 p) const;
 
   // Splits leaf q into four, handing its vertex and edges down under the rules of 5.2 (splitting
-  // deeper where a child breaks one) and classifying the new leaves. False at the deepest level.
+  // deeper where a child breaks one) and classifying the new leaves. False at the deepest level,
+  // and when a child would have to go deeper than that: the split is then left part way, its
+  // leaves missing edges, for the caller to take back (undoChanges).
   bool splitLeaf(int32_t q);
   // Stores vertex v / edge e in the leaves below quadrant q that hold it, splitting leaves whose
   // rules it would break. False when that needs a level deeper than maxDepth.

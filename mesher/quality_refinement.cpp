@@ -189,7 +189,15 @@ size_t QualityRefiner::splitCoarseTakers() {
     takers_.erase(std::unique(takers_.begin(), takers_.end()), takers_.end());
     seeds_.clear();
     for (int32_t q : takers_) {
-      if (!tree[q].isLeaf() || !tree.splitLeaf(q)) continue;
+      if (!tree[q].isLeaf()) continue;
+      // A split can run out of depth part way (two edges nearer each other than the finest
+      // leaf, beside the vertex they meet at): its leaves would have lost them, so it is taken
+      // back.
+      const size_t mark = tree.changes.size();
+      if (!tree.splitLeaf(q)) {
+        tree.undoChanges(mark);
+        continue;
+      }
       tree.leavesBelow(q, seeds_);
       ++splits;
     }

@@ -222,6 +222,20 @@ TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
   EXPECT_EQ(built.tree.leaves().size(), leaves);
 }
 
+// The spike's tip (-2.782, -15.9427) lies in a leaf that would take a shallow wedge and is split
+// for it; near the tip its two edges run closer together than the finest leaf, so the split ran
+// out of depth part way and was kept so: the tip's leaf lost its vertex, the leaves beside it
+// one edge, and the mesh had T-vertices and unmatched edges. Such a split is taken back.
+TEST(QualityRefinement, ASplitThatRunsOutOfDepthIsTakenBack) {
+  const PolygonWithHoles spike{{{70.27, 29.2}, {46, 34}, {30.1358, 21.231}, {10.7905, 47.2521}, {21, 22}, {19, -2}, {-2.782, -15.9427},
+                                {21, -7.7}, {9, -26}, {10.985, -42.57}, {39, -38}, {69.23, -36.655}, {68, -6}, {64, 1}},
+                               {}};
+  const PolygonTree built = buildMeshTree(spike, 23);
+  const Vec2 tip = built.tree.input.vertices[6];
+  EXPECT_EQ(built.tree[built.tree.leafAt(tip)].vertex, 6);
+  test::expectValidMesh(checkMesh(spike, meshPolygon(spike, {23})));
+}
+
 // The refined trees stay 2:1 balanced (AdaptiveMesh builds on them), and splits happen.
 TEST(QualityRefinement, RefinedTreesStayBalanced) {
   std::mt19937 random(31);
