@@ -56,7 +56,7 @@ bool isDiagonal(const std::vector<Vec2>& p, size_t i, size_t j) {
 }
 
 double ConvexPartition::partition(const std::vector<Vec2>& points, const std::vector<Vec2>& shaped,
-                                  const std::vector<double>& reach, std::vector<RingElement>& out) {
+                                  const std::vector<double>& reach, std::vector<RingElement>& out, double rounding) {
   const size_t n = points.size();
   if (n < 3) return -1;
   n_ = n;
@@ -74,7 +74,8 @@ double ConvexPartition::partition(const std::vector<Vec2>& points, const std::ve
     for (size_t j = 0; j < n; ++j) length_[i * n + j] = glm::length(points[j] - points[i]);
   // turnsLeft by indices, with the lengths looked up (computed once per ring).
   auto turns = [&](size_t a, size_t b, size_t c) {
-    return orient2(points[a], points[b], points[c]) > kMinTurnSine * length_[a * n + b] * length_[b * n + c];
+    const double turn = orient2(points[a], points[b], points[c]), ab = length_[a * n + b], bc = length_[b * n + c];
+    return turn > kMinTurnSine * ab * bc && turn > 2 * rounding * (ab + bc);
   };
   constexpr double kOpen = std::numeric_limits<double>::infinity();  // a ring edge: nothing to partition
   best_.assign(n * n, Best{});

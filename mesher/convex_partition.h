@@ -17,16 +17,21 @@ namespace mesher {
 // Sine of a turn at or below which a corner is a sliver or straight.
 inline constexpr double kMinTurnSine = 1e-9;
 
-// Whether a -> b -> c turns left by more than a sliver (no 180-degree corners). Inline: fans
-// test every corner they make.
-inline bool turnsLeft(Vec2 a, Vec2 b, Vec2 c) {
-  // Squared, so no square root: turn > kMinTurnSine |ab| |bc| for a positive turn.
+// Whether a -> b -> c turns left by more than a sliver (no 180-degree corners), and by more than
+// moving each point by `rounding` could undo (TreeFrame::rounding): points computed on one input
+// edge lie that far off its line, and the turn three of them make may be the other way in the
+// plane. Inline: fans test every corner they make.
+inline bool turnsLeft(Vec2 a, Vec2 b, Vec2 c, double rounding = 0) {
+  // Squared, so no square root: turn > kMinTurnSine |ab| |bc| for a positive turn, and turn >
+  // 2 rounding (|ab| + |bc|), which bounds how far the moves change it, as 2 sqrt(2) rounding
+  // sqrt(|ab|^2 + |bc|^2) does.
   const double turn = orient2(a, b, c);
   const Vec2 ab = b - a, bc = c - b;
-  return turn > 0 && turn * turn > kMinTurnSine * kMinTurnSine * glm::dot(ab, ab) * glm::dot(bc, bc);
+  const double ab2 = glm::dot(ab, ab), bc2 = glm::dot(bc, bc);
+  return turn > 0 && turn * turn > kMinTurnSine * kMinTurnSine * ab2 * bc2 && turn * turn > 8 * rounding * rounding * (ab2 + bc2);
 }
-inline bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  return turnsLeft(a, b, c) && turnsLeft(b, c, d) && turnsLeft(c, d, a) && turnsLeft(d, a, b);
+inline bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double rounding = 0) {
+  return turnsLeft(a, b, c, rounding) && turnsLeft(b, c, d, rounding) && turnsLeft(c, d, a, rounding) && turnsLeft(d, a, b, rounding);
 }
 
 // Whether the chord between ring points i and j (not neighbours) runs inside the simple
@@ -47,9 +52,10 @@ class ConvexPartition {
   // corner can reach (`reach`, degrees); a partition's is its worst piece's. The best partition
   // wins, and among those scoring 1 or more the one with fewest pieces. Appends it to `out` and
   // returns its score, or returns -1 when the ring has no such partition. Cost grows with the
-  // fourth power of the ring's size: meant for the few rings fans leave short.
+  // fourth power of the ring's size: meant for the few rings fans leave short. Pieces' corners
+  // turn by more than `rounding` can undo, as turnsLeft's.
   double partition(const std::vector<Vec2>& points, const std::vector<Vec2>& shaped, const std::vector<double>& reach,
-                   std::vector<RingElement>& out);
+                   std::vector<RingElement>& out, double rounding = 0);
 
  private:
   struct Best {

@@ -301,7 +301,8 @@ void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::v
     Templates& templates = templates_[stretchTemplates_];
     if (!templates.have[key]) {
       // The ring on the unit square (it starts at the lower-left corner; leaf edges are powers
-      // of two, so this is exact), in the frame's proportions.
+      // of two, so this is exact), in the frame's proportions. Its points are exact in every
+      // leaf too: no rounding to allow for.
       const double s = static_cast<double>(built_.tree.edgeLength(built_.tree[q]));
       unitRing_.clear();
       for (const Vec2& p : ring_) unitRing_.push_back((p - ring_[0]) / s);
@@ -314,7 +315,7 @@ void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::v
     elements = &templates.pieces[key];
   } else {
     pieces_.clear();
-    subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_, &leaf.boundary);
+    subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_, &leaf.boundary, built_.frame.rounding);
     if (shortLeaves_ && !subdomains_.reachedBound() && built_.tree[q].vertex < 0) shortLeaves_->push_back(q);
   }
   // Ring points have their ids; the inner point and points added on the boundary are this

@@ -87,7 +87,8 @@ bool QualityRefiner::reachesBound(int32_t q, bool innerMayMove) {
   if (region.handedOver && sharpCornerOfItsOwn(region, built_.tree.input, built_.frame.planePerTree())) return false;
   ring_.clear();
   for (const RegionPoint& p : region.ring) ring_.push_back(p.at);
-  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary, innerMayMove);
+  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary, innerMayMove,
+                               built_.frame.rounding);
 }
 
 bool QualityRefiner::reachVertexLeaf(int32_t q) {

@@ -16,7 +16,7 @@ namespace mesher {
 
 namespace {
 
-void earClipAndMerge(const std::vector<Vec2>& ring, std::vector<RingElement>& out) {
+void earClipAndMerge(const std::vector<Vec2>& ring, double rounding, std::vector<RingElement>& out) {
   const auto triangles = triangulate({ring, {}});
   std::vector<bool> used(triangles.size(), false);
   // Triangles sharing an edge (one runs it forward, the other backward).
@@ -32,7 +32,7 @@ void earClipAndMerge(const std::vector<Vec2>& ring, std::vector<RingElement>& ou
       if (other == byEdge.end() || used[other->second] || other->second == t) continue;
       const auto& u = triangles[other->second];
       const uint32_t d = u[0] != a && u[0] != b ? u[0] : u[1] != a && u[1] != b ? u[1] : u[2];
-      if (!strictlyConvexQuad(ring[a], ring[d], ring[b], ring[c])) continue;
+      if (!strictlyConvexQuad(ring[a], ring[d], ring[b], ring[c], rounding)) continue;
       out.push_back({{a, d, b, c}, 4});
       used[t] = used[other->second] = true;
       merged = true;
@@ -60,7 +60,7 @@ void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge)
     const uint32_t a = run[i], b = run[i + 1];
     if (i + 2 < run.size()) {
       const uint32_t c = run[i + 2];
-      if (strictlyConvexQuad(points[hinge], points[a], points[b], points[c])) {
+      if (strictlyConvexQuad(points[hinge], points[a], points[b], points[c], rounding_)) {
         trial_.push_back({{hinge, a, b, c}, 4});
         i += 2;
         continue;
@@ -83,7 +83,7 @@ bool SubdomainRemover::fanFromHinge(const std::vector<Vec2>& points, size_t ring
       run_.clear();
       continue;
     }
-    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], points[h])) return false;
+    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], points[h], rounding_)) return false;
     run_.push_back(i);
   }
   mergeRun(points, h);
@@ -97,7 +97,7 @@ bool SubdomainRemover::fanFromInside(const std::vector<Vec2>& points, size_t rin
   run_.clear();
   for (size_t k = 0; k <= n; ++k) {
     const auto i = static_cast<uint32_t>((start + k) % n);
-    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], inner)) return false;
+    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], inner, rounding_)) return false;
     run_.push_back(i);
   }
   mergeRun(points, static_cast<uint32_t>(n));
@@ -237,7 +237,7 @@ bool SubdomainRemover::partitionReaches(const std::vector<Vec2>& ring, const Vec
     shape(n, shapeScale);
     ringOnly_.assign(points_.begin(), points_.begin() + static_cast<std::ptrdiff_t>(n));
     trial_.clear();
-    const double score = partition_.partition(ringOnly_, shaped_, reach_, trial_);
+    const double score = partition_.partition(ringOnly_, shaped_, reach_, trial_, rounding_);
     // A ring no point sees whole takes the best partition even when it falls short.
     if (score >= 1 || (noFan && feet == 0 && score >= 0)) {
       best_.swap(trial_);
@@ -249,7 +249,8 @@ bool SubdomainRemover::partitionReaches(const std::vector<Vec2>& ring, const Vec
 }
 
 void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                            std::vector<RingElement>& out, const RingBoundary* boundary) {
+                            std::vector<RingElement>& out, const RingBoundary* boundary, double rounding) {
+  rounding_ = rounding;
   score_ = attempt(ring, preferredHinge, inner, shapeScale, boundary);
   // Still short, or no fan at all: pieces around several points (ConvexPartition). Asked only
   // whether some set reaches the bound, this goes first: it settles most rings at once.
@@ -291,7 +292,7 @@ void SubdomainRemover::mesh(const std::vector<Vec2>& ring, int preferredHinge, c
   points_.assign(ring.begin(), ring.end());
   origin_.resize(ring.size());
   for (size_t i = 0; i < ring.size(); ++i) origin_[i] = static_cast<int>(i);
-  earClipAndMerge(ring, out);
+  earClipAndMerge(ring, rounding_, out);
 }
 
 void SubdomainRemover::save(Solution& to, double score) const {
@@ -392,11 +393,11 @@ void SubdomainRemover::cutAndFan(const std::vector<Vec2>& ring, Vec2 shapeScale)
 }
 
 bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                                    const RingBoundary* boundary, bool innerMayMove) {
+                                    const RingBoundary* boundary, bool innerMayMove, double rounding) {
   firstGood_ = true;
   innerMayMove_ = innerMayMove;
   unused_.clear();
-  mesh(ring, preferredHinge, inner, shapeScale, unused_, boundary);
+  mesh(ring, preferredHinge, inner, shapeScale, unused_, boundary, rounding);
   firstGood_ = false;
   innerMayMove_ = true;
   return score_ >= 1;

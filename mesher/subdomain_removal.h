@@ -36,8 +36,8 @@ struct RingBoundary {
 // 5.4, wins ties. A ring that neither a fan nor a partition meshes (pinched at a point) is ear
 // clipped, triangle pairs merged into convex quads. Shapes are judged on `ring` (tree
 // coordinates, where collinear grid points are exact), angles on the ring scaled by
-// `shapeScale` (plane units per tree unit on each axis). Scratch memory is kept from ring to
-// ring.
+// `shapeScale` (plane units per tree unit on each axis); corners turn by more than `rounding`
+// can undo (turnsLeft; TreeFrame::rounding). Scratch memory is kept from ring to ring.
 class SubdomainRemover {
  public:
   // `boundary`, when given: which ring edges lie on the polygon's boundary (LeafRegion's). Where
@@ -45,7 +45,7 @@ class SubdomainRemover {
   // and pieces may gather around several points (ConvexPartition). Elements index points(), and
   // ringIndexOf() tells which of them are ring points.
   void mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-            std::vector<RingElement>& out, const RingBoundary* boundary = nullptr);
+            std::vector<RingElement>& out, const RingBoundary* boundary = nullptr, double rounding = 0);
   // The points the last mesh() call's elements index (tree coordinates): the ring with any
   // added points in order, then the inner point.
   const std::vector<Vec2>& points() const { return points_; }
@@ -58,7 +58,7 @@ class SubdomainRemover {
   // own corner there, when that is sharper); quicker than mesh(), as it stops at the first set
   // that does. `innerMayMove` false leaves out the dearest step, moving the inner point.
   bool reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
-                    const RingBoundary* boundary = nullptr, bool innerMayMove = true);
+                    const RingBoundary* boundary = nullptr, bool innerMayMove = true, double rounding = 0);
 
  private:
   // Fans `points` (a ring, with the inner point appended when there is one) out from
@@ -132,6 +132,7 @@ class SubdomainRemover {
   std::vector<Vec2> ringOnly_;
   ConvexPartition partition_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound
+  double rounding_ = 0;     // the mesh() call's
   bool innerMayMove_ = true;  // false only within a reachesBound call that says so
   bool firstGood_ = false;  // the search stops at the first set that reaches the bound
 };

@@ -75,7 +75,8 @@ TreeFrame setupTreeFrame(const PolygonWithHoles& polygon, int maxDepth) {
   double magnitude = 0;
   for (const Vec2& p : polygon.outer) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
   constexpr double kEpsilon = 0x1p-52;
-  frame.gridSnap = std::max({1e-6, 16 * root * kEpsilon, 16 * magnitude * kEpsilon * frame.scale * frame.stretch});
+  frame.rounding = std::max(16 * root * kEpsilon, 16 * magnitude * kEpsilon * frame.scale * frame.stretch);
+  frame.gridSnap = std::max(1e-6, frame.rounding);
   return frame;
 }
 

@@ -14,9 +14,14 @@ struct TreeFrame {
   double scale = 1;      // uniform scale that maps the longer extent onto the root square
   double stretch = 1;    // extra scale of the shorter axis, up to its next power of two, in [1, 2)
   int shortAxis = 1;     // the tree axis (0 = x, 1 = y) that `stretch` applies to
+  // How far a tree point may lie from where its plane point does, in tree units: the rounding of
+  // tree coordinates (a deep root square) and of plane coordinates (far from the origin), carried
+  // through the turn and the scale. An element's corner must turn by more than this can undo, or
+  // it may turn the other way in the plane.
+  double rounding = 0;
   // Tree coordinates this close to an integer are taken to lie on that grid line: 1e-6 tree
-  // units, or more where rounding is coarser (a deep root square, plane coordinates far from
-  // the origin) so points that belong on a line are not left a rounding error off it.
+  // units, or the rounding where that is coarser, so points that belong on a line are not left
+  // a rounding error off it.
   double gridSnap = 1e-6;
 
   Vec2 yAxis() const { return {-xAxis.y, xAxis.x}; }

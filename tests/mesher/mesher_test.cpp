@@ -236,6 +236,21 @@ TEST(Mesher, RoundingOfDeepTreesAndFarOffsets) {
                  18.823691242856832);
 }
 
+// Points a leaf adds on an input edge (the feet of its other points) lie off the edge's line by
+// the rounding of tree coordinates: near this spike's tip (43.2, -77.4), in a tree 22 levels
+// deep, by a billionth of their distance apart. Three such made a quad's corner that turned left
+// by a sine of 1.1e-9 in tree coordinates, just past kMinTurnSine, and right in the plane.
+// Corners must turn by more than rounding can undo.
+TEST(Mesher, PointsAddedOnAnEdgeMakeNoStraightCorner) {
+  expectGoodMesh({{{83, 10}, {79.523845026884885, 49.91850765512585}, {25, 41}, {-13, 43}, {-21, 3},
+                   {-65.067745551664729, 3.2371183673459143}, {-45, -42}, {-1.9183419929839758, -41.802144787858367},
+                   {-11.26714809816627, -99.106160158870424}, {7, -102}, {18.900425323933124, -47.591120786923767},
+                   {43.245563627600916, -77.365357381076407}, {30, -42}, {51, -44}, {88.624591243366538, -59.486001445851713},
+                   {92, -18}},
+                  {}},
+                 4);
+}
+
 // Two holes a hair apart crowd many vertices along the gap; meshing stays fast (this once took
 // seconds with spatially laid-out vertex ids).
 TEST(Mesher, HolesAHairApart) {

@@ -31,7 +31,8 @@ bool cornerLeafReachesBound(const PolygonTree& built, Vec2 corner) {
   const LeafRegion& region = regions.build(built.tree.leafAt(corner));
   std::vector<Vec2> ring;
   for (const RegionPoint& p : region.ring) ring.push_back(p.at);
-  return SubdomainRemover().reachesBound(ring, region.hinge, &region.inner, built.frame.planePerTree(), &region.boundary);
+  return SubdomainRemover().reachesBound(ring, region.hinge, &region.inner, built.frame.planePerTree(), &region.boundary, true,
+                                         built.frame.rounding);
 }
 bool cornerLeafReachesBound(const PolygonTree& built) { return cornerLeafReachesBound(built, built.tree.input.vertices[3]); }
 
