@@ -110,9 +110,12 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
   const double extent = mesher::extent(polygon.outer);
   // On the boundary: within 1e-9 of the polygon's size. A T-vertex: on an element edge up to the
   // rounding of computed points (1e-12 of the coordinates), not merely close to it, as the
-  // corners of a sliver at a sharp spike are.
+  // corners of a sliver at a sharp spike are; and in line with it, as seen from the edge's nearer
+  // end. Far from the origin an element can be smaller than that rounding (1e-7 at 1e5): its
+  // own corners lie as close to its other edges, but at its angles to them.
   const double tolerance = 1e-9 * std::max(extent, 1e-9 * size);
   const double onEdge = 1e-12 * (size + extent);
+  constexpr double kInLine = 1e-3;  // largest distance from the edge's line over that from its nearer end
 
   size_t index = 0;
   for (const Ring2& ring : rings)
@@ -175,8 +178,10 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
     grid.near(mesh.vertices[v], [&](const std::pair<uint32_t, uint32_t>& edge) {
       if (edge.first == v || edge.second == v) return;
       double t;
-      const double d = distanceToSegment(mesh.vertices[v], mesh.vertices[edge.first], mesh.vertices[edge.second], t);
-      if (d <= onEdge && t > 1e-12 && t < 1 - 1e-12) ++check.tVertices;
+      const Vec2 p = mesh.vertices[v], a = mesh.vertices[edge.first], b = mesh.vertices[edge.second];
+      const double d = distanceToSegment(p, a, b, t);
+      if (d <= onEdge && t > 1e-12 && t < 1 - 1e-12 && d <= kInLine * std::min(glm::length(p - a), glm::length(p - b)))
+        ++check.tVertices;
     });
   }
   return check;

@@ -288,5 +288,25 @@ TEST(MeshChecks, CatchBrokenMeshes) {
   EXPECT_GT(checkMesh(square, flipped).notCounterClockwiseOrConvex, 0u);
 }
 
+// Far from the origin the rounding of computed points (1e-12 of the coordinates) is as large as
+// an element can be: at (1e5, 1e5), 1e-7. The corners of a triangle that small lie as close to
+// the opposite edges, at an angle to them, and counted as T-vertices. A broken mesh that small
+// still shows its one: the centre of the right quad's left edge in the mesh above.
+TEST(MeshChecks, CornersOfElementsSmallerThanTheRoundingAreNoTVertices) {
+  const Vec2 far{1e5, 1e5};
+  const PolygonWithHoles triangle{{far, far + Vec2{1e-7, 0}, far + Vec2{0.4e-7, 0.6e-7}}, {}};
+  Mesh one;
+  one.vertices = triangle.outer;
+  one.elements = {{0, 1, 2, Mesh::kNone}};
+  EXPECT_EQ(checkMesh(triangle, one).tVertices, 0u);
+
+  Mesh coarse;
+  for (const Vec2 v : {Vec2{0, 0}, Vec2{2, 0}, Vec2{2, 2}, Vec2{0, 2}, Vec2{1, 0}, Vec2{1, 1}, Vec2{1, 2}, Vec2{0, 1}})
+    coarse.vertices.push_back(far + 1e-7 * v);
+  coarse.elements = {{0, 4, 5, 7}, {7, 5, 6, 3}, {4, 1, 2, 6}};
+  const PolygonWithHoles square{{coarse.vertices.begin(), coarse.vertices.begin() + 4}, {}};
+  EXPECT_EQ(checkMesh(square, coarse).tVertices, 1u);
+}
+
 }  // namespace
 }  // namespace mesher
