@@ -42,8 +42,11 @@ constexpr int kTakerRounds = 4;
 // changed one (three left some short).
 constexpr int kPasses = 10;
 
-// The smallest leaf a deeper tree may have, over the polygon's largest coordinate.
-constexpr double kFinestLeafOverCoordinates = 1e-8;
+// The smallest leaf a deeper tree may have, over the polygon's largest coordinate: about ten
+// thousand times the coordinates' rounding. In 80,000 random polygons this left 7 elements below
+// the bound, and no invalid mesh; in half of them 1e-8 left 34, and no limit (trees 50 levels
+// deep) 345 and three invalid meshes, their smallest elements lost in rounding.
+constexpr double kFinestLeafOverCoordinates = 1e-12;
 
 // How many levels below itself a short leaf without a vertex may be split (one did in every
 // random polygon that had one).
@@ -292,7 +295,7 @@ void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTre
                    std::optional<QualityRefiner>& refiner) {
   // A vertex leaf that could not be split far enough, the tree being as deep as it goes, gets a
   // tree 8 levels deeper, while its finest leaves stay well above the rounding of the plane's
-  // coordinates (smaller, the elements' corners would turn by rounding).
+  // coordinates.
   double largest = 0;
   for (const Vec2& p : polygon.outer) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
   int maxDepth = -1;
