@@ -94,10 +94,14 @@ std::optional<WedgeHandover> wedgeHandover(const Quadtree& tree, Vec2 planePerTr
   const Vec2 a = tree.input.vertices[tree.input.edges[edge][0]], b = tree.input.vertices[tree.input.edges[edge][1]];
   const std::optional<WedgeSide> wedge = shallowWedge(a, b, vertical, planePerTree);
   if (!wedge || m[acrossAxis] != q[acrossAxis] || (m[alongAxis] - q[alongAxis]) * wedge->along <= 0) return {};
-  // A crossing on a grid point (snapped there) touches more leaves than two.
-  if (q[alongAxis] == std::round(q[alongAxis])) return {};
   const int32_t other = leafAcross(tree, q, vertical, -leafSideOf(side));
   if (other < 0) return {};
+  // A crossing on a leaf's corner (snapped there) touches more leaves than two; on a grid point
+  // of the finest level that is no leaf's corner, it touches these two alone.
+  auto cornerOf = [&](const Quadrant& l) {
+    return std::fmod(q[alongAxis] - static_cast<double>(vertical ? l.y : l.x), static_cast<double>(tree.edgeLength(l))) == 0;
+  };
+  if (cornerOf(tree[leaf]) || cornerOf(tree[other])) return {};
   WedgeHandover handover;
   const bool leafGives = leafSideOf(side) == wedge->side;
   handover.giver = leafGives ? leaf : other;

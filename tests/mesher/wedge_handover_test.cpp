@@ -5,6 +5,7 @@
 #include "mesher/mesh_check.h"
 #include "mesher/mesher.h"
 #include "tests/mesher/mesh_expectations.h"
+#include "tests/mesher/random_polygons.h"
 
 #include <gtest/gtest.h>
 
@@ -89,6 +90,19 @@ TEST(WedgeHandover, NoWedgeAtAnyShallowTurn) {
     test::expectValidMesh(checkMesh(floor, mesh));
     EXPECT_EQ(wedgeCorners(floor, mesh), 0u);
   }
+}
+
+// A random star polygon (the 278th of seed 12003, 1e5 from the origin, in a tree 28 levels deep)
+// whose edge crosses a leaf's side, 7 levels down, at a point of the finest grid (snapped
+// there): no leaf's corner, so the crossing touches two leaves and its wedge is handed over.
+// Every point of the finest grid was taken for a corner, leaving a wedge of 13 degrees.
+TEST(WedgeHandover, ACrossingOnTheFinestGridIsNoCorner) {
+  std::mt19937 random(12003);
+  PolygonWithHoles star;
+  for (int trial = 0; trial <= 277; ++trial) star = test::randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10);
+  const MeshCheck check = checkMesh(star, meshPolygon(star, {9}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
 }
 
 // The Cornell box's floor with its blocks' footprints cut out (turned 16.6 and 17.2 degrees):
