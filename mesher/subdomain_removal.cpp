@@ -312,17 +312,25 @@ double SubdomainRemover::load(Solution& from) {
 double SubdomainRemover::fanSide(const std::vector<Vec2>& side, Vec2 shapeScale, Solution& into) {
   save(into, attempt(side, -1, nullptr, shapeScale, nullptr));
   if (into.score >= 1 && into.elements.size() <= (side.size() - 1) / 2) return into.score;  // none has fewer
+  // Points of its own: a grid over the side, and the apexes of near-equilateral triangles on its
+  // edges (a short edge far from the grid's points wants a point close to it).
+  candidates_.clear();
   Vec2 low = side[0], high = side[0];
   for (const Vec2& p : side) low = glm::min(low, p), high = glm::max(high, p);
   constexpr int kGrid = 8;
   for (int gx = 0; gx < kGrid; ++gx)
-    for (int gy = 0; gy < kGrid; ++gy) {
-      const Vec2 at = low + (high - low) * Vec2{(gx + 0.5) / kGrid, (gy + 0.5) / kGrid};
-      if (!containsPoint(side, at)) continue;
-      const double s = attempt(side, -1, &at, shapeScale, nullptr, true);
-      const bool better = s >= 1 ? into.score < 1 || best_.size() < into.elements.size() : s > into.score;
-      if (better) save(into, s);
-    }
+    for (int gy = 0; gy < kGrid; ++gy) candidates_.push_back(low + (high - low) * Vec2{(gx + 0.5) / kGrid, (gy + 0.5) / kGrid});
+  for (size_t i = 0; i < side.size(); ++i) {
+    const Vec2 a = side[i] * shapeScale, d = side[(i + 1) % side.size()] * shapeScale - a;
+    const Vec2 inward{-d.y, d.x};  // the ring is counter-clockwise
+    for (double height : {0.5, 0.866}) candidates_.push_back((a + 0.5 * d + height * inward) / shapeScale);
+  }
+  for (const Vec2& at : candidates_) {
+    if (!containsPoint(side, at)) continue;
+    const double s = attempt(side, -1, &at, shapeScale, nullptr, true);
+    const bool better = s >= 1 ? into.score < 1 || best_.size() < into.elements.size() : s > into.score;
+    if (better) save(into, s);
+  }
   return into.score;
 }
 
