@@ -111,11 +111,12 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
   // On the boundary: within 1e-9 of the polygon's size. A T-vertex: on an element edge up to the
   // rounding of computed points (1e-12 of the coordinates), not merely close to it, as the
   // corners of a sliver at a sharp spike are; and in line with it, as seen from the edge's nearer
-  // end. Far from the origin an element can be smaller than that rounding (1e-7 at 1e5): its
-  // own corners lie as close to its other edges, but at its angles to them.
+  // end. Far from the origin elements can be smaller than that rounding (1e-7 at 1e5): the
+  // corners beside an edge's end lie as close to it, but at the elements' angles (a distance
+  // from the line a third or more of that from the end, where rounding gives under a hundredth).
   const double tolerance = 1e-9 * std::max(extent, 1e-9 * size);
   const double onEdge = 1e-12 * (size + extent);
-  constexpr double kInLine = 1e-3;  // largest distance from the edge's line over that from its nearer end
+  constexpr double kInLine = 0.1;  // largest distance from the edge's line over that from its nearer end
 
   size_t index = 0;
   for (const Ring2& ring : rings)
