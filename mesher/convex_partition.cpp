@@ -69,13 +69,12 @@ double ConvexPartition::partition(const std::vector<Vec2>& points, const std::ve
   auto corner = [&](size_t prev, size_t at, size_t next) {
     return cornerAngleDeg(shaped[prev], shaped[at], shaped[next]) / reach[at];
   };
-  length_.resize(n * n);
+  length2_.resize(n * n);
   for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < n; ++j) length_[i * n + j] = glm::length(points[j] - points[i]);
-  // turnsLeft by indices, with the lengths looked up (computed once per ring).
+    for (size_t j = 0; j < n; ++j) length2_[i * n + j] = glm::dot(points[j] - points[i], points[j] - points[i]);
+  // turnsLeft by indices, with the squared lengths looked up (computed once per ring).
   auto turns = [&](size_t a, size_t b, size_t c) {
-    const double turn = orient2(points[a], points[b], points[c]), ab = length_[a * n + b], bc = length_[b * n + c];
-    return turn > kMinTurnSine * ab * bc && turn > 2 * rounding * (ab + bc);
+    return turnsPast(orient2(points[a], points[b], points[c]), length2_[a * n + b], length2_[b * n + c], rounding);
   };
   constexpr double kOpen = std::numeric_limits<double>::infinity();  // a ring edge: nothing to partition
   best_.assign(n * n, Best{});

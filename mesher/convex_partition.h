@@ -17,18 +17,19 @@ namespace mesher {
 // Sine of a turn at or below which a corner is a sliver or straight.
 inline constexpr double kMinTurnSine = 1e-9;
 
-// Whether a -> b -> c turns left by more than a sliver (no 180-degree corners), and by more than
-// moving each point by `rounding` could undo (TreeFrame::rounding): points computed on one input
-// edge lie that far off its line, and the turn three of them make may be the other way in the
-// plane. Inline: fans test every corner they make.
-inline bool turnsLeft(Vec2 a, Vec2 b, Vec2 c, double rounding = 0) {
-  // Squared, so no square root: turn > kMinTurnSine |ab| |bc| for a positive turn, and turn >
-  // 2 rounding (|ab| + |bc|), which bounds how far the moves change it, as 2 sqrt(2) rounding
-  // sqrt(|ab|^2 + |bc|^2) does.
-  const double turn = orient2(a, b, c);
-  const Vec2 ab = b - a, bc = c - b;
-  const double ab2 = glm::dot(ab, ab), bc2 = glm::dot(bc, bc);
+// Whether a turn (orient2 of a -> b -> c, with |ab|^2 and |bc|^2) is left by more than a sliver
+// (no 180-degree corners), and by more than moving each point by `rounding` could undo
+// (TreeFrame::rounding): points computed on one input edge lie that far off its line, and the
+// turn three of them make may be the other way in the plane. Squared, so no square root: turn >
+// kMinTurnSine |ab| |bc|, and turn > 2 sqrt(2) rounding sqrt(|ab|^2 + |bc|^2), which bounds how far
+// the moves change it.
+inline bool turnsPast(double turn, double ab2, double bc2, double rounding) {
   return turn > 0 && turn * turn > kMinTurnSine * kMinTurnSine * ab2 * bc2 && turn * turn > 8 * rounding * rounding * (ab2 + bc2);
+}
+// Inline: fans test every corner they make.
+inline bool turnsLeft(Vec2 a, Vec2 b, Vec2 c, double rounding = 0) {
+  const Vec2 ab = b - a, bc = c - b;
+  return turnsPast(orient2(a, b, c), glm::dot(ab, ab), glm::dot(bc, bc), rounding);
 }
 inline bool strictlyConvexQuad(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double rounding = 0) {
   return turnsLeft(a, b, c, rounding) && turnsLeft(b, c, d, rounding) && turnsLeft(c, d, a, rounding) && turnsLeft(d, a, b, rounding);
@@ -69,7 +70,7 @@ class ConvexPartition {
   size_t n_ = 0;
   std::vector<uint8_t> chord_;  // n x n: ring edge or inner diagonal
   std::vector<Best> best_;      // n x n, for i < j: the sub-ring i, i + 1, ..., j
-  std::vector<double> length_;  // n x n: distances between ring points
+  std::vector<double> length2_;  // n x n: squared distances between ring points
 };
 
 }  // namespace mesher
