@@ -312,8 +312,8 @@ double SubdomainRemover::load(Solution& from) {
 double SubdomainRemover::fanSide(const std::vector<Vec2>& side, Vec2 shapeScale, Solution& into) {
   save(into, attempt(side, -1, nullptr, shapeScale, nullptr));
   if (into.score >= 1 && into.elements.size() <= (side.size() - 1) / 2) return into.score;  // none has fewer
-  // Points of its own: a grid over the side, and the apexes of near-equilateral triangles on its
-  // edges (a short edge far from the grid's points wants a point close to it).
+  // Points of its own: a grid over the side, and the apexes of triangles on its edges, right-angled
+  // and equilateral (a short edge far from the grid's points wants a point close to it).
   candidates_.clear();
   Vec2 low = side[0], high = side[0];
   for (const Vec2& p : side) low = glm::min(low, p), high = glm::max(high, p);
@@ -323,7 +323,7 @@ double SubdomainRemover::fanSide(const std::vector<Vec2>& side, Vec2 shapeScale,
   for (size_t i = 0; i < side.size(); ++i) {
     const Vec2 a = side[i] * shapeScale, d = side[(i + 1) % side.size()] * shapeScale - a;
     const Vec2 inward{-d.y, d.x};  // the ring is counter-clockwise
-    for (double height : {0.5, 0.866}) candidates_.push_back((a + 0.5 * d + height * inward) / shapeScale);
+    for (double height : {0.5, std::numbers::sqrt3 / 2}) candidates_.push_back((a + 0.5 * d + height * inward) / shapeScale);
   }
   for (const Vec2& at : candidates_) {
     if (!containsPoint(side, at)) continue;
@@ -337,67 +337,56 @@ double SubdomainRemover::fanSide(const std::vector<Vec2>& side, Vec2 shapeScale,
 void SubdomainRemover::cutAndFan(const std::vector<Vec2>& ring, Vec2 shapeScale) {
   const size_t n = ring.size();
   save(stage_, score_);
-  std::vector<RingElement> elements;
-  std::vector<Vec2> points;
-  std::vector<int> origin;
-  size_t fewest = std::numeric_limits<size_t>::max();
-  // Appends a side's fan to elements and points, its point k being the ring's firstPoint + k.
-  auto add = [&](const Solution& side, size_t firstPoint) {
-    std::vector<uint32_t> index(side.points.size());
-    for (size_t k = 0; k < side.points.size(); ++k) {
-      if (side.origin[k] >= 0) {
-        index[k] = static_cast<uint32_t>((firstPoint + static_cast<size_t>(side.origin[k])) % n);
-        continue;
-      }
-      index[k] = static_cast<uint32_t>(points.size());
-      points.push_back(side.points[k]);
-      origin.push_back(-1);
+  cut_.score = -1;
+  // Fans the sides, the first from ring point i to j, the second (when `cut`) from j round to i,
+  // and keeps them in cut_ when both reach the bound with fewer elements than any before.
+  auto consider = [&](size_t i, size_t j, bool cut) {
+    const size_t sizes[2] = {cut ? j - i + 1 : n, n - (j - i) + 1};
+    size_t count = 0;
+    for (int s = 0; s < (cut ? 2 : 1); ++s) {
+      side_.clear();
+      for (size_t k = 0; k < sizes[s]; ++k) side_.push_back(ring[((s == 0 ? i : j) + k) % n]);
+      if (fanSide(side_, shapeScale, cutSides_[s]) < 1) return;
+      count += cutSides_[s].elements.size();
     }
-    for (RingElement e : side.elements) {
-      for (uint8_t k = 0; k < e.count; ++k) e.v[k] = index[e.v[k]];
-      elements.push_back(e);
+    if (cut_.score >= 1 && count >= cut_.elements.size()) return;
+    cut_.elements.clear();
+    cut_.points.assign(ring.begin(), ring.end());
+    cut_.origin.resize(n);
+    for (size_t k = 0; k < n; ++k) cut_.origin[k] = static_cast<int>(k);
+    cut_.score = 1;
+    for (int s = 0; s < (cut ? 2 : 1); ++s) {
+      const Solution& side = cutSides_[s];
+      // A side's point k is the ring's (first + k) or a point of its own, appended.
+      cutIndex_.resize(side.points.size());
+      for (size_t k = 0; k < side.points.size(); ++k) {
+        if (side.origin[k] >= 0) {
+          cutIndex_[k] = static_cast<uint32_t>(((s == 0 ? i : j) + static_cast<size_t>(side.origin[k])) % n);
+          continue;
+        }
+        cutIndex_[k] = static_cast<uint32_t>(cut_.points.size());
+        cut_.points.push_back(side.points[k]);
+        cut_.origin.push_back(-1);
+      }
+      for (RingElement e : side.elements) {
+        for (uint8_t k = 0; k < e.count; ++k) e.v[k] = cutIndex_[e.v[k]];
+        cut_.elements.push_back(e);
+      }
     }
   };
+  consider(0, 0, false);  // no cut: the whole ring around a point of its own
   auto angle = [&](size_t prev, size_t at, size_t next) {
     return cornerAngleDeg(ring[prev] * shapeScale, ring[at] * shapeScale, ring[next] * shapeScale);
   };
-  // i == j: no cut, the whole ring around a point of its own.
   for (size_t i = 0; i < n; ++i)
-    for (size_t j = i; j < n; ++j) {
-      const bool cut = j != i;
-      if (cut && (j < i + 2 || (i == 0 && j == n - 1) || !isDiagonal(ring, i, j))) continue;
-      if (!cut && i > 0) continue;
+    for (size_t j = i + 2; j < n; ++j) {
+      if ((i == 0 && j == n - 1) || !isDiagonal(ring, i, j)) continue;
       // A cut must not make a corner sharper than the bound.
-      if (cut && std::min({angle(j, i, i + 1), angle(j - 1, j, i), angle(i, j, (j + 1) % n), angle((i + n - 1) % n, i, j)}) <
-                     kAngleBoundDeg)
-        continue;
-      const size_t sizes[2] = {cut ? j - i + 1 : n, n - (j - i) + 1};
-      size_t count = 0;
-      bool reached = true;
-      for (int s = 0; s < (cut ? 2 : 1) && reached; ++s) {
-        side_.clear();
-        const size_t first = s == 0 ? i : j;
-        for (size_t k = 0; k < sizes[s]; ++k) side_.push_back(ring[(first + k) % n]);
-        reached = fanSide(side_, shapeScale, cutSides_[s]) >= 1;
-        count += cutSides_[s].elements.size();
-      }
-      if (!reached || count >= fewest) continue;
-      fewest = count;
-      elements.clear();
-      points.assign(ring.begin(), ring.end());
-      origin.resize(n);
-      for (size_t k = 0; k < n; ++k) origin[k] = static_cast<int>(k);
-      add(cutSides_[0], i);
-      if (cut) add(cutSides_[1], j);
+      if (std::min({angle(j, i, i + 1), angle(j - 1, j, i), angle(i, j, (j + 1) % n), angle((i + n - 1) % n, i, j)}) >=
+          kAngleBoundDeg)
+        consider(i, j, true);
     }
-  if (fewest == std::numeric_limits<size_t>::max()) {
-    score_ = load(stage_);
-    return;
-  }
-  best_.swap(elements);
-  points_.swap(points);
-  origin_.swap(origin);
-  score_ = 1;
+  score_ = load(cut_.score >= 1 ? cut_ : stage_);
 }
 
 bool SubdomainRemover::reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,

@@ -33,7 +33,7 @@ struct RingBoundary {
 // takes one whose angles all reach kAngleBoundDeg (or the ring's own corner there, when that is
 // sharper) with the fewest elements; when none does, it goes on beyond the thesis (see mesh())
 // and, failing everything, keeps the fan closest to the bound. `preferredHinge`, the rule of
-// 5.4, wins ties. A ring that neither a fan nor a partition meshes (pinched at a point) is ear
+// 5.4, wins ties. A ring that neither a fan, a partition nor a cut meshes (pinched at a point) is ear
 // clipped, triangle pairs merged into convex quads. Shapes are judged on `ring` (tree
 // coordinates, where collinear grid points are exact), angles on the ring scaled by
 // `shapeScale` (plane units per tree unit on each axis); corners turn by more than `rounding`
@@ -47,7 +47,8 @@ class SubdomainRemover {
   void mesh(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
             std::vector<RingElement>& out, const RingBoundary* boundary = nullptr, double rounding = 0);
   // The points the last mesh() call's elements index (tree coordinates): the ring with any
-  // added points in order, then the inner point.
+  // added points in order, then the inner point; or, after a cut, the ring and then each side's
+  // point of its own.
   const std::vector<Vec2>& points() const { return points_; }
   // Which ring point points()[i] is, or -1 for the inner point or an added one.
   int ringIndexOf(size_t i) const { return origin_[i]; }
@@ -55,8 +56,9 @@ class SubdomainRemover {
   // own corner there, when that is sharper).
   bool reachedBound() const { return score_ >= 1; }
   // Whether mesh() would give elements that reach kAngleBoundDeg at every corner (or the ring's
-  // own corner there, when that is sharper); quicker than mesh(), as it stops at the first set
-  // that does. `innerMayMove` false leaves out the dearest step, moving the inner point.
+  // own corner there, when that is sharper), short of its last step (cutAndFan); quicker than
+  // mesh(), as it stops at the first set that does. `innerMayMove` false leaves out the next
+  // dearest step, moving the inner point.
   bool reachesBound(const std::vector<Vec2>& ring, int preferredHinge, const Vec2* inner, Vec2 shapeScale,
                     const RingBoundary* boundary = nullptr, bool innerMayMove = true, double rounding = 0);
 
@@ -98,13 +100,13 @@ class SubdomainRemover {
   void save(Solution& to, double score) const;
   double load(Solution& from);
   // Cuts the ring along one diagonal, or not at all, and meshes each side by a fan from one of
-  // its points or around a point of its own inside it, tried on a grid. For rings whose reflex
+  // its points or around a point of its own inside it (see fanSide). For rings whose reflex
   // corner lies so near a leaf side, where no point may be added, that no fan or partition of
   // the ring's points reaches the bound. Takes the fewest elements that reach it (into best_,
   // points_, origin_ and score_); leaves all as it was when none does.
   void cutAndFan(const std::vector<Vec2>& ring, Vec2 shapeScale);
-  // The best fan of `side` (a ring) from its points or around a grid point inside it, into
-  // `into`; returns its score.
+  // The best fan of `side` (a ring) from its points or around a point inside it (a grid's, or an
+  // apex of a triangle on one of its edges), into `into`; returns its score.
   double fanSide(const std::vector<Vec2>& side, Vec2 shapeScale, Solution& into);
   // Scales points_' first n (a ring) to true proportions into shaped_, and works out what
   // each corner can reach (reach_, tanReach_).
@@ -127,8 +129,9 @@ class SubdomainRemover {
   std::vector<RingElement> trial_, best_, unused_;
   std::vector<Vec2> candidates_;
   Solution plain_, augmented_, stage_;  // set aside: the plain ring's, the best with feet, a stage's
-  Solution cutSides_[2], sideTrial_;     // cutAndFan's: the two sides of a cut, a side's fan tried
+  Solution cutSides_[2], cut_;  // cutAndFan's: the two sides of a cut, the best cut's elements
   std::vector<Vec2> side_;
+  std::vector<uint32_t> cutIndex_;
   std::vector<Vec2> ringOnly_;
   ConvexPartition partition_;
   double score_ = -1;       // the last mesh() call's: 1 or more when its elements reach the bound

@@ -57,6 +57,34 @@ TEST(SubdomainRemoval, APointOnTheBoundaryCutsOffATinyCornerWhole) {
   EXPECT_NEAR(m.area, 0.5 * ring[1].x * (ring[1].y - ring[0].y), 1e-6 * m.area);  // the triangle the ring is
 }
 
+// Meshes the ring and expects every angle within the bound, convex counter-clockwise elements
+// tiling it, and points of its own only strictly inside the leaf or on the ring's boundary edges
+// (anywhere else on a side they would be T-vertices).
+void expectMeshedWithinTheBound(const std::vector<Vec2>& ring, const RingBoundary& boundary, Vec2 inner, Vec2 scale) {
+  SubdomainRemover remover;
+  std::vector<RingElement> elements;
+  remover.mesh(ring, 1, &inner, scale, elements, &boundary);
+  EXPECT_TRUE(remover.reachedBound());
+  const Measured m = measure(elements, remover.points(), scale);
+  EXPECT_GE(m.smallestAngle, kAngleBoundDeg);
+  EXPECT_TRUE(m.convex);
+  double ringArea = 0;
+  for (size_t i = 0; i < ring.size(); ++i) ringArea += 0.5 * (ring[i].x * ring[(i + 1) % ring.size()].y - ring[(i + 1) % ring.size()].x * ring[i].y);
+  EXPECT_NEAR(m.area, ringArea, 1e-9 * ringArea);
+  for (size_t i = 0; i < remover.points().size(); ++i) {
+    if (remover.ringIndexOf(i) >= 0) continue;
+    const Vec2 p = remover.points()[i];
+    bool onBoundaryEdge = false;
+    for (size_t e = 0; e < ring.size(); ++e) {
+      const Vec2 a = ring[e], b = ring[(e + 1) % ring.size()];
+      const double along = glm::dot(p - a, b - a) / glm::dot(b - a, b - a);
+      onBoundaryEdge |= boundary.onBoundary(ring, e) && along > 0 && along < 1 && glm::length(a + along * (b - a) - p) < 1e-9 * boundary.size;
+    }
+    const bool inside = p.x > boundary.x0 && p.x < boundary.x0 + boundary.size && p.y > boundary.y0 && p.y < boundary.y0 + boundary.size;
+    EXPECT_TRUE(inside || onBoundaryEdge) << p.x << ", " << p.y;
+  }
+}
+
 // An input edge enters a leaf of 32,768 tree units through its east side, 5% above the south-east
 // corner, turns at a vertex 12% from the west side and leaves through the north side: a
 // reflex corner so near a closed side that every chord from it to the west side's ends, and
@@ -70,25 +98,22 @@ TEST(SubdomainRemoval, AReflexCornerNearAClosedSideIsCutAndFannedAroundAPointOfI
   RingBoundary boundary;
   boundary.pathPoints = 3;  // the two input edges; the leaf's sides have leaves inside across them
   boundary.x0 = 622592, boundary.y0 = 524288, boundary.size = 32768;
-  const Vec2 inner{633358.77218781947, 534297.92275087617};
-  const Vec2 scale{0.00013169688143235163, 0.00012325572267858409};
-  SubdomainRemover remover;
-  std::vector<RingElement> elements;
-  remover.mesh(ring, 1, &inner, scale, elements, &boundary);
-  EXPECT_TRUE(remover.reachedBound());
-  const Measured m = measure(elements, remover.points(), scale);
-  EXPECT_GE(m.smallestAngle, kAngleBoundDeg);
-  EXPECT_TRUE(m.convex);
-  double ringArea = 0;
-  for (size_t i = 0; i < ring.size(); ++i) ringArea += 0.5 * (ring[i].x * ring[(i + 1) % ring.size()].y - ring[(i + 1) % ring.size()].x * ring[i].y);
-  EXPECT_NEAR(m.area, ringArea, 1e-9 * ringArea);
-  // Points of its own lie strictly inside the leaf: on a side they would be T-vertices.
-  for (size_t i = 0; i < remover.points().size(); ++i) {
-    if (remover.ringIndexOf(i) >= 0) continue;
-    const Vec2 p = remover.points()[i];
-    EXPECT_TRUE(p.x > boundary.x0 && p.x < boundary.x0 + boundary.size && p.y > boundary.y0 && p.y < boundary.y0 + boundary.size)
-        << p.x << ", " << p.y;
-  }
+  expectMeshedWithinTheBound(ring, boundary, {633358.77218781947, 534297.92275087617}, {0.00013169688143235163, 0.00012325572267858409});
+}
+
+// A leaf 16,384 units on edge at the root's south border (open there and to the west): an input
+// edge runs from the north side down to a vertex on the south side, the next one to the east side
+// 25 units up, and a T-vertex on the north side lies 1.8% of the leaf from the first crossing.
+// The segment between them is so short that only a point of its own near it meshes the ring
+// within the bound; no point of a grid over the ring comes near enough, the apex of a triangle
+// on that segment does. (17.6 degrees were left, in a random star polygon.)
+TEST(SubdomainRemoval, AShortEdgeTakesAPointOfItsOwnNearIt) {
+  const std::vector<Vec2> ring{{24278.820604644388, 16384}, {32522.370443227261, 0}, {32768, 24.973138052761573}, {32768, 16384}, {24576, 16384}};
+  RingBoundary boundary;
+  boundary.pathPoints = 3;
+  boundary.openSides = 5;  // west and south
+  boundary.x0 = 16384, boundary.y0 = 0, boundary.size = 16384;
+  expectMeshedWithinTheBound(ring, boundary, {29935.853219849287, 10769.551022234667}, {0.00021587705625758516, 0.00034075648335868403});
 }
 
 }  // namespace
