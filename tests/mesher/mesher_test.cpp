@@ -32,15 +32,6 @@ void expectGoodMesh(const PolygonWithHoles& polygon, double patchSize, Quality* 
   if (quality) quality->elements += mesh.elements.size(), quality->belowAngleBound += c.belowAngleBound;
 }
 
-// No element of the 2,000 random polygons below the angle bound, other than at sharper input
-// corners: wedges where an edge crosses a grid line at under 18.4 degrees are handed across the
-// line (wedge_handover_test.cpp), thin strips take points on the boundary and pieces around
-// several points (convex_partition_test.cpp), and a reflex corner near a closed side a cut and a
-// point of its own (subdomain_removal_test.cpp). The share below it was 0.0008% (convex with
-// holes) and none (concave) before that cut, 0.08% and 0.05% when vertex leaves were split three
-// levels at most, 0.59% and 0.42% with fans alone, 3.3% and 2.6% before vertex leaves were split
-// for quality.
-
 TEST(Mesher, ARectangleBecomesQuads) {
   const PolygonWithHoles rectangle{{{3, 2}, {35, 2}, {35, 14}, {3, 14}}, {}};
   const Mesh mesh = meshPolygon(rectangle, {4});
@@ -57,13 +48,16 @@ TEST(Mesher, ConcavePolygonWithAHole) {
   expectGoodMesh({{{0, 0}, {10, 0}, {10, 6}, {6, 6}, {6, 10}, {0, 10}}, {{{1, 1}, {1, 3}, {3, 3}, {3, 1}}}}, 1.5);
 }
 
+// Valid meshes, and no element below the angle bound other than at sharper input corners: the
+// quality steps each have their own tests (quality_refinement_test.cpp, wedge_handover_test.cpp,
+// subdomain_removal_test.cpp, convex_partition_test.cpp); these hold them all to the bound.
 TEST(Mesher, RandomPolygonsWithHoles) {
   std::mt19937 random(77);
   Quality quality;
   for (int trial = 0; trial < 1000; ++trial) {
     SCOPED_TRACE("trial " + std::to_string(trial));
-    const PolygonWithHoles polygon = test::randomPolygonWithHoles(random, trial);
-    expectGoodMesh(polygon, 5 + trial % 40, &quality);
+    const test::RandomTestPolygon randomPolygon = test::randomTestPolygon(random, false, trial);
+    expectGoodMesh(randomPolygon.polygon, randomPolygon.patchSize, &quality);
   }
   EXPECT_EQ(quality.belowAngleBound, 0u) << "of " << quality.elements << " elements";
 }
@@ -82,30 +76,26 @@ TEST(Mesher, RandomConcavePolygons) {
   Quality quality;
   for (int trial = 0; trial < 1000; ++trial) {
     SCOPED_TRACE("trial " + std::to_string(trial));
-    const PolygonWithHoles polygon = test::randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10);
-    expectGoodMesh(polygon, 2 + trial % 30, &quality);
+    const test::RandomTestPolygon randomPolygon = test::randomTestPolygon(random, true, trial);
+    expectGoodMesh(randomPolygon.polygon, randomPolygon.patchSize, &quality);
   }
   EXPECT_EQ(quality.belowAngleBound, 0u) << "of " << quality.elements << " elements";
 }
 
-// Ten thousand more, as the two tests above make them, from five further seeds: corners nearer a
-// grid line than the tree goes deep, spikes whose edges run closer than its finest leaf, and
-// points added on edges far from the origin turn up only in so many. Two elements of 4.4 million
-// are below the bound: a sliver where an edge runs 2e-4 of a leaf of the finest level off the
-// leaf's side (seed 6000, trial 593: a deeper tree would lose the leaf in the coordinates'
-// rounding), and a strip between a closed side and an edge meeting its line at 16.8 degrees,
-// which wants two points on the edge where subdomain removal adds feet (seed 6001, trial 421).
+// Ten thousand more, of five further seeds of the broad sweep (forEachSweepPolygon): corners
+// nearer a grid line than the tree goes deep, spikes whose edges run closer than its finest leaf,
+// and points added on edges far from the origin turn up only in so many. Two elements of 4.4
+// million are below the bound: a sliver where an edge runs 2e-4 of a leaf of the finest level
+// off the leaf's side (seed 6000, concave, trial 593: a deeper tree would lose the leaf in the
+// coordinates' rounding), and a strip between a closed leaf side and an edge meeting its line
+// at 16.8 degrees, which wants two points on the edge where subdomain removal adds feet
+// elsewhere (seed 6001, concave, trial 421).
 TEST(Mesher, TenThousandMoreRandomPolygons) {
   Quality quality;
-  for (unsigned seed = 6000; seed < 6005; ++seed)
-    for (int concave = 0; concave < 2; ++concave) {
-      std::mt19937 random(seed * 2 + static_cast<unsigned>(concave));
-      for (int trial = 0; trial < 1000; ++trial) {
-        SCOPED_TRACE("seed " + std::to_string(seed) + (concave ? " concave" : " with holes") + " trial " + std::to_string(trial));
-        if (concave) expectGoodMesh(test::randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10), 2 + trial % 30, &quality);
-        else expectGoodMesh(test::randomPolygonWithHoles(random, trial), 5 + trial % 40, &quality);
-      }
-    }
+  test::forEachSweepPolygon(6000, 5, [&](const test::RandomTestPolygon& randomPolygon, unsigned seed, bool concave, int trial) {
+    SCOPED_TRACE("seed " + std::to_string(seed) + (concave ? " concave" : " with holes") + " trial " + std::to_string(trial));
+    expectGoodMesh(randomPolygon.polygon, randomPolygon.patchSize, &quality);
+  });
   EXPECT_LE(quality.belowAngleBound, 2u) << "of " << quality.elements << " elements";
 }
 

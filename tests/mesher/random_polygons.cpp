@@ -82,4 +82,16 @@ PolygonWithHoles randomStarPolygon(std::mt19937& random, int trial, double offse
   return p;
 }
 
+RandomTestPolygon randomTestPolygon(std::mt19937& random, bool concave, int trial) {
+  if (concave) return {randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10), 2.0 + trial % 30};
+  return {randomPolygonWithHoles(random, trial), 5.0 + trial % 40};
+}
+
+RandomTestPolygon randomTestPolygon(unsigned seed, bool concave, int trial) {
+  std::mt19937 random(seed);
+  RandomTestPolygon polygon;
+  for (int made = 0; made <= trial; ++made) polygon = randomTestPolygon(random, concave, made);
+  return polygon;
+}
+
 }  // namespace mesher::test

@@ -24,21 +24,15 @@ int main(int argc, char** argv) {
   }
   Mesher mesher;
   size_t below = 0, elements = 0, invalid = 0;
-  for (unsigned seed = first; seed < first + seeds; ++seed)
-    for (int concave = 0; concave < 2; ++concave) {
-      std::mt19937 random(seed * 2 + static_cast<unsigned>(concave));  // as Mesher.TenThousandMoreRandomPolygons
-      for (int trial = 0; trial < 1000; ++trial) {
-        const PolygonWithHoles polygon =
-            concave ? test::randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10) : test::randomPolygonWithHoles(random, trial);
-        const Mesh mesh = mesher.mesh(polygon, {concave ? 2.0 + trial % 30 : 5.0 + trial % 40});
-        const MeshCheck c = checkMesh(polygon, mesh);
-        const bool bad = c.tVertices || c.notCounterClockwiseOrConvex || c.movedInputVertices || c.unmatchedInnerEdges ||
-                         c.repeatedEdges || std::abs(c.elementArea - c.polygonArea) > 1e-9 * c.polygonArea;
-        if (c.belowAngleBound || bad)
-          std::printf("seed %u %s trial %d: %zu below the bound%s\n", seed, concave ? "concave" : "with holes", trial,
-                      c.belowAngleBound, bad ? ", invalid" : "");
-        below += c.belowAngleBound, elements += mesh.elements.size(), invalid += bad;
-      }
-    }
+  test::forEachSweepPolygon(first, seeds, [&](const test::RandomTestPolygon& random, unsigned seed, bool concave, int trial) {
+    const Mesh mesh = mesher.mesh(random.polygon, {random.patchSize});
+    const MeshCheck c = checkMesh(random.polygon, mesh);
+    const bool bad = c.tVertices || c.notCounterClockwiseOrConvex || c.movedInputVertices || c.unmatchedInnerEdges ||
+                     c.repeatedEdges || std::abs(c.elementArea - c.polygonArea) > 1e-9 * c.polygonArea;
+    if (c.belowAngleBound || bad)
+      std::printf("seed %u %s trial %d: %zu below the bound%s\n", seed, concave ? "concave" : "with holes", trial, c.belowAngleBound,
+                  bad ? ", invalid" : "");
+    below += c.belowAngleBound, elements += mesh.elements.size(), invalid += bad;
+  });
   std::printf("%zu of %zu elements below the bound, %zu invalid meshes\n", below, elements, invalid);
 }

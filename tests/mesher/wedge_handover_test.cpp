@@ -97,9 +97,7 @@ TEST(WedgeHandover, NoWedgeAtAnyShallowTurn) {
 // there): no leaf's corner, so the crossing touches two leaves and its wedge is handed over.
 // Every point of the finest grid was taken for a corner, leaving a wedge of 13 degrees.
 TEST(WedgeHandover, ACrossingOnTheFinestGridIsNoCorner) {
-  std::mt19937 random(12003);
-  PolygonWithHoles star;
-  for (int trial = 0; trial <= 277; ++trial) star = test::randomStarPolygon(random, trial, trial % 2 ? 1e5 : 10);
+  const PolygonWithHoles star = test::randomTestPolygon(12003, true, 277).polygon;
   const MeshCheck check = checkMesh(star, meshPolygon(star, {9}));
   test::expectValidMesh(check);
   EXPECT_EQ(check.belowAngleBound, 0u);
