@@ -29,9 +29,8 @@ bool offTheBorder(const Quadtree& tree, int32_t q) {
 // How many levels below its leaf a vertex may be taken. A vertex a hair from a grid line stays
 // that close to the line, but each level doubles its distance relative to the leaf: twelve take
 // a ten-thousandth of the leaf to about a third, and random polygons have corners closer than
-// that (the tree's own depth stops splits first: about 16 levels below the patch size). The
-// leaves around are balanced down with it, so the mesh is graded there: random polygons mesh
-// 3-6% more elements than with three levels, and most of those that fell short reach the bound.
+// that (the tree's own depth stops splits first: 16 levels below the patch size, or a deeper
+// tree's). The leaves around are balanced down with it, so the mesh is graded there.
 constexpr int kDeeper = 24;
 
 // Rounds of splitting leaves too coarse to take a wedge (each round's balancing can make more).
@@ -42,11 +41,16 @@ constexpr int kTakerRounds = 4;
 // changed one (three left some short).
 constexpr int kPasses = 10;
 
-// The smallest leaf a deeper tree may have, over the polygon's largest coordinate: about ten
-// thousand times the coordinates' rounding. In 80,000 random polygons this left 7 elements below
-// the bound, and no invalid mesh; in half of them 1e-8 left 34, and no limit (trees 50 levels
-// deep) 345 and three invalid meshes, their smallest elements lost in rounding.
-constexpr double kFinestLeafOverCoordinates = 1e-12;
+// How many levels deeper a tree is built again when a vertex leaf runs out of depth (as
+// buildPolygonTree deepens one whose vertices it cannot separate).
+constexpr int kDeeperTree = 8;
+
+// The smallest a deeper tree's finest leaf may be, over its rounding (TreeFrame::rounding): far
+// from the origin, 1e-12 of the polygon's coordinates. In 90,000 random polygons this leaves 3
+// elements below the bound and no invalid mesh; the finest leaf at 1e-8 of the coordinates left
+// 34 in 40,000, and no limit (trees 50 levels deep) 345 and three invalid meshes, the smallest
+// elements lost in rounding.
+constexpr double kFinestLeafOverRounding = 280;
 
 // How many levels below itself a short leaf without a vertex may be split (one did in every
 // random polygon that had one).
@@ -84,17 +88,21 @@ bool sharpCornerOfItsOwn(const LeafRegion& region, const QuadtreeInput& input, V
 
 }  // namespace
 
-bool QualityRefiner::reachesBound(int32_t q, bool innerMayMove) {
+bool QualityRefiner::reachesBound(int32_t q, bool innerMayMove, bool meshed) {
   const LeafRegion& region = regions_.build(q);
   if (region.ring.empty()) return true;
   if (region.handedOver && sharpCornerOfItsOwn(region, built_.tree.input, built_.frame.planePerTree())) return false;
   ring_.clear();
   for (const RegionPoint& p : region.ring) ring_.push_back(p.at);
-  return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary, innerMayMove,
-                               built_.frame.rounding);
+  if (!meshed)
+    return remover_.reachesBound(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), &region.boundary,
+                                 innerMayMove, built_.frame.rounding);
+  elements_.clear();
+  remover_.mesh(ring_, region.hinge, &region.inner, built_.frame.planePerTree(), elements_, &region.boundary, built_.frame.rounding);
+  return remover_.reachedBound();
 }
 
-bool QualityRefiner::reachVertexLeaf(int32_t q) {
+bool QualityRefiner::reachVertexLeaf(int32_t q, bool& outOfDepth) {
   Quadtree& tree = built_.tree;
   // The vertex's leaf is split, kDeeper levels at most, until it reaches the bound; at each level
   // it may also take a T-vertex at the middle of a side, from the leaf across split finer. Splits
@@ -104,7 +112,7 @@ bool QualityRefiner::reachVertexLeaf(int32_t q) {
     if (splitAcross(at)) return verified(at), true;
     if (depth == kDeeper) return false;
     if (!tree.splitLeaf(at)) {
-      shortAtDeepestLevel_ = true;
+      outOfDepth = true;
       return false;
     }
     tried_.clear();
@@ -165,9 +173,13 @@ size_t QualityRefiner::refineVertexLeaves() {
       continue;
     }
     const size_t mark = tree.changes.size(), verifiedMark = verified_.size();
-    if (!reachVertexLeaf(q)) {
+    bool outOfDepth = false;
+    if (!reachVertexLeaf(q, outOfDepth)) {
       tree.undoChanges(mark);
       verified_.resize(verifiedMark);
+      // A deeper tree could split it further, unless meshing reaches the bound after all (with
+      // the cut that reachesBound leaves out).
+      if (outOfDepth && !reachesBound(q, true, true)) shortAtDeepestLevel_ = true;
       continue;
     }
     seedLeavesSplitSince(mark);
@@ -294,21 +306,18 @@ size_t refineForQuality(PolygonTree& built) { return QualityRefiner(built).refin
 void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
                    std::optional<QualityRefiner>& refiner) {
   // A vertex leaf that could not be split far enough, the tree being as deep as it goes, gets a
-  // tree 8 levels deeper, while its finest leaves stay well above the rounding of the plane's
-  // coordinates.
-  double largest = 0;
-  for (const Vec2& p : polygon.outer) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  // tree kDeeperTree levels deeper, while its finest leaves stay well above its rounding.
   int maxDepth = -1;
-  for (int deeper = 0;; deeper += 8) {
+  for (int deeper = 0;; deeper += kDeeperTree) {
     buildPolygonTree(polygon, patchSize, into, deeper);
     if (into.tree.maxDepth <= maxDepth) continue;  // the vertices needed this depth anyway: tried
     maxDepth = into.tree.maxDepth;
     balance(into.tree);
     if (!refiner) refiner.emplace(into);
     refiner->refine();
-    const Vec2 finestDeeper = into.frame.planePerTree() / 256.0;
-    if (!refiner->shortAtDeepestLevel() || maxDepth + 8 > kDeepestTree ||
-        std::min(finestDeeper.x, finestDeeper.y) < kFinestLeafOverCoordinates * largest)
+    // In the deeper tree's units, where its finest leaf is 1.
+    const double deeperRounding = into.frame.rounding * std::exp2(kDeeperTree);
+    if (!refiner->shortAtDeepestLevel() || maxDepth + kDeeperTree > kDeepestTree || kFinestLeafOverRounding * deeperRounding > 1)
       break;
   }
   into.tree.changes.clear();

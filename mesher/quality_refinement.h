@@ -40,10 +40,13 @@ class QualityRefiner {
   bool shortAtDeepestLevel() const { return shortAtDeepestLevel_; }
 
  private:
-  bool reachesBound(int32_t q, bool innerMayMove = true);
+  // Whether leaf q's region meshes within the bound: as SubdomainRemover::reachesBound says, or,
+  // when `meshed`, as mesh() does it with every step.
+  bool reachesBound(int32_t q, bool innerMayMove = true, bool meshed = false);
   // Splits vertex leaf q, and leaves across its sides, until its region reaches the bound;
-  // false when a few levels do not get there (the splits are left for the caller to undo).
-  bool reachVertexLeaf(int32_t q);
+  // false when a few levels do not get there (the splits are left for the caller to undo),
+  // with `outOfDepth` set when the tree allowed no deeper split.
+  bool reachVertexLeaf(int32_t q, bool& outOfDepth);
   // Whether splitting the leaf across one side of vertex leaf q finer than q makes q reach the
   // bound; the first such split is kept, the others are taken back.
   bool splitAcross(int32_t q);
@@ -66,6 +69,7 @@ class QualityRefiner {
   // (leaf, changes made before it was found to reach the bound), (leaf, a split beside it).
   std::vector<std::pair<int32_t, size_t>> verified_, touched_;
   std::vector<Vec2> ring_;
+  std::vector<RingElement> elements_;
   bool shortAtDeepestLevel_ = false;
 };
 
@@ -73,7 +77,8 @@ class QualityRefiner {
 size_t refineForQuality(PolygonTree& built);
 
 // A polygon's tree as the mesher meshes it, built into `into` (its memory reused):
-// buildPolygonTree, balance, the quality splits, and no changes left recorded. `refiner` is
+// buildPolygonTree, balance, the quality splits (all again in a deeper tree when a vertex leaf
+// ran out of depth), and no changes left recorded. `refiner` is
 // made over `into` when empty and kept for the next polygon. Throws std::invalid_argument as
 // buildPolygonTree does.
 void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
