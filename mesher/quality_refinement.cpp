@@ -208,10 +208,12 @@ size_t QualityRefiner::splitCoarseTakers() {
       if (!tree[q].isLeaf()) continue;
       // A split can run out of depth part way (two edges nearer each other than the finest
       // leaf, beside the vertex they meet at): its leaves would have lost them, so it is taken
-      // back.
+      // back, and the wedge it would take stays with its giver, short of the bound: a deeper
+      // tree may split it.
       const size_t mark = tree.changes.size();
       if (!tree.splitLeaf(q)) {
         tree.undoChanges(mark);
+        shortAtDeepestLevel_ = true;
         continue;
       }
       tree.leavesBelow(q, seeds_);

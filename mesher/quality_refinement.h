@@ -35,8 +35,8 @@ class QualityRefiner {
   // kitchen 12% more meshing): the mesher meshes, and meshes again after these splits. Returns
   // how many leaves were split.
   size_t splitShortLeaves(const std::vector<int32_t>& leaves);
-  // Whether the last refine() left a vertex leaf short of the bound because the tree allows no
-  // deeper split.
+  // Whether the last refine() left a vertex leaf, or a wedge with its giver, short of the bound
+  // because the tree allows no deeper split.
   bool shortAtDeepestLevel() const { return shortAtDeepestLevel_; }
 
  private:

@@ -220,7 +220,8 @@ TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
 // The spike's tip (-2.782, -15.9427) lies in a leaf that would take a shallow wedge and is split
 // for it; near the tip its two edges run closer together than the finest leaf, so the split ran
 // out of depth part way and was kept so: the tip's leaf lost its vertex, the leaves beside it
-// one edge, and the mesh had T-vertices and unmatched edges. Such a split is taken back.
+// one edge, and the mesh had T-vertices and unmatched edges. Such a split is taken back, and
+// the tree built again deeper, where the taker splits and takes the wedge (17.5 degrees before).
 TEST(QualityRefinement, ASplitThatRunsOutOfDepthIsTakenBack) {
   const PolygonWithHoles spike{{{70.27, 29.2}, {46, 34}, {30.1358, 21.231}, {10.7905, 47.2521}, {21, 22}, {19, -2}, {-2.782, -15.9427},
                                 {21, -7.7}, {9, -26}, {10.985, -42.57}, {39, -38}, {69.23, -36.655}, {68, -6}, {64, 1}},
@@ -228,7 +229,10 @@ TEST(QualityRefinement, ASplitThatRunsOutOfDepthIsTakenBack) {
   const PolygonTree built = buildMeshTree(spike, 23);
   const Vec2 tip = built.tree.input.vertices[6];
   EXPECT_EQ(built.tree[built.tree.leafAt(tip)].vertex, 6);
-  test::expectValidMesh(checkMesh(spike, meshPolygon(spike, {23})));
+  EXPECT_GT(built.tree.maxDepth, buildPolygonTree(spike, 23).tree.maxDepth);
+  const MeshCheck check = checkMesh(spike, meshPolygon(spike, {23}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);  // the tip itself is sharper than the bound
 }
 
 // The refined trees stay 2:1 balanced (AdaptiveMesh builds on them), and splits happen.
