@@ -316,7 +316,7 @@ void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::v
   } else {
     pieces_.clear();
     subdomains_.mesh(ring_, leaf.hinge, &inner, built_.frame.planePerTree(), pieces_, &leaf.boundary, built_.frame.rounding);
-    if (shortLeaves_ && !subdomains_.reachedBound() && built_.tree[q].vertex < 0) shortLeaves_->push_back(q);
+    if (shortLeaves_ && !subdomains_.reachedBound()) shortLeaves_->push_back(q);
   }
   // Ring points have their ids; the inner point and points added on the boundary are this
   // leaf's own (a template's indices are the ring's, then the inner point).

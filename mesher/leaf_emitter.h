@@ -40,8 +40,8 @@ class LeafEmitter {
   const std::vector<uint32_t>& ringIds(int32_t q);
   const std::vector<uint32_t>& lastRingIds() const { return ringIds_; }
 
-  // While set, emit() appends to `leaves` the leaves holding no input vertex whose regions it
-  // could not mesh within the angle bound (QualityRefiner::splitShortLeaves takes them).
+  // While set, emit() appends to `leaves` the leaves whose regions it could not mesh within the
+  // angle bound (QualityRefiner::splitShortLeaves takes them).
   void collectShortLeaves(std::vector<int32_t>* leaves) { shortLeaves_ = leaves; }
 
   // Registers input vertices added to the tree after the emitter was made (a hole inserted):

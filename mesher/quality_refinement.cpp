@@ -16,9 +16,10 @@ namespace mesher {
 namespace {
 
 // Whether leaf q's vertex lies inside the leaf's square, off its border: only then is it looked
-// at (a look costs about as much as meshing the leaf, and in 2,000 random polygons no vertex on
-// its leaf's border fell short). A vertex near a side leaves a strip too thin to mesh; one
-// further in can fall short too, where shallow edges leave sharp wedges beside it.
+// at beforehand (a look costs about as much as meshing the leaf, and vertices on grid lines are
+// common; one on its leaf's border that falls short is split after meshing, as a short leaf). A
+// vertex near a side leaves a strip too thin to mesh; one further in can fall short too, where
+// shallow edges leave sharp wedges beside it.
 bool offTheBorder(const Quadtree& tree, int32_t q) {
   const Quadrant& leaf = tree[q];
   const double s = static_cast<double>(tree.edgeLength(leaf));
@@ -282,7 +283,7 @@ size_t QualityRefiner::splitShortLeaves(const std::vector<int32_t>& leaves) {
   size_t splits = 0;
   seeds_.clear();
   for (int32_t q : leaves) {
-    if (!tree[q].isLeaf() || tree[q].vertex >= 0) continue;
+    if (!tree[q].isLeaf() || (tree[q].vertex >= 0 && offTheBorder(tree, q))) continue;
     const size_t mark = tree.changes.size();
     bool reached = false;
     for (int32_t at = q, level = 0; !reached && level < kShortLeafLevels && tree.splitLeaf(at); ++level) {

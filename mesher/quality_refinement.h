@@ -28,12 +28,12 @@ class QualityRefiner {
  public:
   explicit QualityRefiner(PolygonTree& built) : built_(built), regions_(built) {}
   size_t refine();
-  // Splits each of `leaves` (holding no input vertex; their regions, meshed, fell short of the
-  // bound: LeafEmitter::collectShortLeaves) until every leaf below it reaches the bound, a few
-  // levels at most, then rebalances; leaves that do not get there stay whole. Their regions are
-  // too rarely short for the refiner to look at every such leaf beforehand (that cost the
-  // kitchen 12% more meshing): the mesher meshes, and meshes again after these splits. Returns
-  // how many leaves were split.
+  // Splits each of `leaves` (their regions, meshed, fell short of the bound:
+  // LeafEmitter::collectShortLeaves) that refine() did not look at, holding no input vertex or
+  // one on its border, until every leaf below it reaches the bound, a few levels at most, then
+  // rebalances; leaves that do not get there stay whole. Their regions are too rarely short for
+  // the refiner to look at every such leaf beforehand (that cost the kitchen 12% more meshing):
+  // the mesher meshes, and meshes again after these splits. Returns how many leaves were split.
   size_t splitShortLeaves(const std::vector<int32_t>& leaves);
   // Whether the last refine() left a vertex leaf, or a wedge with its giver, short of the bound
   // because the tree allows no deeper split.

@@ -235,6 +235,19 @@ TEST(QualityRefinement, ASplitThatRunsOutOfDepthIsTakenBack) {
   EXPECT_EQ(check.belowAngleBound, 0u);  // the tip itself is sharper than the bound
 }
 
+// A random star polygon 1e5 from the origin (the 422nd of seed 12003) with a vertex on the east
+// side of a coarsest leaf: the leaf's region, a strip between its closed south side and an edge
+// meeting that side's line at 16.8 degrees, fell short (15 degrees). Vertices on their leaf's
+// border are not looked at beforehand; meshed short, the leaf is split and meshed again.
+TEST(QualityRefinement, AVertexOnItsLeafsBorderThatFallsShortIsSplit) {
+  const test::RandomTestPolygon star = test::randomTestPolygon(12003, true, 421);
+  const MeshCheck check = checkMesh(star.polygon, meshPolygon(star.polygon, {star.patchSize}));
+  test::expectValidMesh(check);
+  EXPECT_EQ(check.belowAngleBound, 0u);
+  const AdaptiveMesh adaptive(star.polygon, {star.patchSize});
+  EXPECT_EQ(checkMesh(star.polygon, adaptive.snapshot()).belowAngleBound, 0u);
+}
+
 // The refined trees stay 2:1 balanced (AdaptiveMesh builds on them), and splits happen.
 TEST(QualityRefinement, RefinedTreesStayBalanced) {
   std::mt19937 random(31);
