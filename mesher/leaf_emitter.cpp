@@ -251,10 +251,16 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
       id = inputToMesh_[static_cast<size_t>(p.inputVertex)];
     } else if (!inOrder_ || (region.handedOver && !onBorder())) {
       // Off the border only a handed-over wedge puts points (wedge_handover.h), which the
-      // tree order does not foresee: they go in the table.
-      id = ids_->findOrAdd(p.at, added);
-      if (added) vertices_.push_back(built_.frame.toPlane(p.at));
-      handedOver_ = handedOver_ || (inOrder_ && added);
+      // tree order does not foresee: they go in the table. In tree order a grid point among
+      // them (a T-vertex on the giver's side) may be a corner or midpoint that an earlier
+      // leaf across that side kept out of the table: it is looked for there first, or the
+      // taker would make it a second vertex that leaf does not share.
+      if (inOrder_) id = earlierId(q, region, p.at);
+      if (id == Mesh::kNone) {
+        id = ids_->findOrAdd(p.at, added);
+        if (added) vertices_.push_back(built_.frame.toPlane(p.at));
+        handedOver_ = handedOver_ || (inOrder_ && added);
+      }
     } else if ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0)) {
       // New (see inOrder_), unless it is the leaf's input vertex or this ring had it already
       // (a template's ring is known to be free of both).

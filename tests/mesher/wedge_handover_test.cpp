@@ -13,6 +13,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 
 namespace mesher {
 namespace {
@@ -101,6 +102,23 @@ TEST(WedgeHandover, ACrossingOnTheFinestGridIsNoCorner) {
   const MeshCheck check = checkMesh(star, meshPolygon(star, {9}));
   test::expectValidMesh(check);
   EXPECT_EQ(check.belowAngleBound, 0u);
+}
+
+// Random star polygons (the 325th of seed 14003, the 983rd of 14027, the 997th of 16013) each
+// with a wedge whose giver is left with nothing: its taker's ring runs along the giver's side
+// past the corner of a finer leaf across it, which came earlier in tree order and kept that
+// corner out of the point table. The taker made it a second vertex at the same place, leaving
+// four edges unmatched; now it finds the corner, as leaf-by-leaf emission does.
+TEST(WedgeHandover, ATakerSharesTheCornersOfLeavesAcrossTheGiversSide) {
+  for (const auto& [seed, trial] : {std::pair{14003u, 324}, std::pair{14027u, 982}, std::pair{16013u, 996}}) {
+    SCOPED_TRACE(std::to_string(seed) + " trial " + std::to_string(trial));
+    const test::RandomTestPolygon star = test::randomTestPolygon(seed, true, trial);
+    const Mesh whole = meshPolygon(star.polygon, {star.patchSize});
+    test::expectValidMesh(checkMesh(star.polygon, whole));
+    const Mesh leafByLeaf = AdaptiveMesh(star.polygon, {star.patchSize}).snapshot();
+    EXPECT_EQ(whole.vertices, leafByLeaf.vertices);
+    EXPECT_EQ(whole.elements, leafByLeaf.elements);
+  }
 }
 
 // The Cornell box's floor with its blocks' footprints cut out (turned 16.6 and 17.2 degrees):
