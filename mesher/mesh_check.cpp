@@ -113,10 +113,11 @@ MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh) {
   // corners of a sliver at a sharp spike are; and in line with it, as seen from the edge's nearer
   // end. Far from the origin elements can be smaller than that rounding (1e-7 at 1e5): the
   // corners beside an edge's end lie as close to it, but at the elements' angles (a distance
-  // from the line a third or more of that from the end, where rounding gives under a hundredth).
+  // from the line a third or more of that from the end, or a thirtieth beside a sliver of 2
+  // degrees, where rounding gives under a hundredth).
   const double tolerance = 1e-9 * std::max(extent, 1e-9 * size);
   const double onEdge = 1e-12 * (size + extent);
-  constexpr double kInLine = 0.1;  // largest distance from the edge's line over that from its nearer end
+  constexpr double kInLine = 0.01;  // largest distance from the edge's line over that from its nearer end
 
   size_t index = 0;
   for (const Ring2& ring : rings)
