@@ -36,8 +36,8 @@ AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& 
   emitter_->collectShortLeaves(&shortLeaves);
   for (int32_t q : leaves) emitLeaf(q, ignored);
   emitter_->collectShortLeaves(nullptr);
-  // As Mesher meshes: leaves without a vertex that fell short of the angle bound are split,
-  // and the tree is meshed again from the start.
+  // As Mesher meshes: leaves the refiner did not look at that fell short of the angle bound are
+  // split (QualityRefiner::splitShortLeaves), and the tree is meshed again from the start.
   if (shortLeaves.empty() || QualityRefiner(built_).splitShortLeaves(shortLeaves) == 0) return;
   built_.tree.changes.clear();
   slots_.clear();

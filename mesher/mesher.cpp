@@ -56,8 +56,9 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   s.emitter->collectShortLeaves(&s.shortLeaves);
   s.emitter->emitAll(out.elements);
   s.emitter->collectShortLeaves(nullptr);
-  // Leaves without a vertex whose regions fell short of the angle bound (rare: none in the
-  // shipped scenes) are split, and the tree meshed again.
+  // Leaves the refiner did not look at (without a vertex, or with one on their border) whose
+  // regions fell short of the angle bound (rare: none in the shipped scenes) are split, and the
+  // tree meshed again.
   if (!s.shortLeaves.empty() && s.refiner->splitShortLeaves(s.shortLeaves) > 0) {
     s.built.tree.changes.clear();
     s.emitter->reset(polygon, (3 * s.built.tree.quadrants.size() + 1) / 4);
