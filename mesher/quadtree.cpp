@@ -535,14 +535,22 @@ PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, 
 }
 
 void buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper) {
-  constexpr int kDeepest = kDeepestTree;
+  buildSetUpTree(polygon, setUpPolygonTree(polygon, patchSize, into, deeper), into);
+}
+
+int setUpPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper) {
   const double longerExtent = 1 / setupTreeFrame(polygon, 0).scale;  // a root of edge 1
-  const int depth = initialDepth(longerExtent, patchSize, kDeepest);
-  for (int maxDepth = std::min(kDeepest, depth + 16 + deeper);; maxDepth = std::min(kDeepest, maxDepth + 8)) {
-    into.frame = setupTreeFrame(polygon, maxDepth);
+  const int depth = initialDepth(longerExtent, patchSize, kDeepestTree);
+  into.frame = setupTreeFrame(polygon, std::min(kDeepestTree, depth + 16 + deeper));
+  quadtreeInput(polygon, into.frame, into.tree.input);
+  return depth;
+}
+
+void buildSetUpTree(const PolygonWithHoles& polygon, int depth, PolygonTree& into) {
+  while (!buildQuadtree(into.tree, into.frame.maxDepth, depth, into.frame.gridSnap)) {
+    if (into.frame.maxDepth == kDeepestTree) throw std::invalid_argument("polygon vertices cannot be separated (repeated or crossing)");
+    into.frame = setupTreeFrame(polygon, std::min(kDeepestTree, into.frame.maxDepth + 8));
     quadtreeInput(polygon, into.frame, into.tree.input);
-    if (buildQuadtree(into.tree, maxDepth, depth, into.frame.gridSnap)) return;
-    if (maxDepth == kDeepest) throw std::invalid_argument("polygon vertices cannot be separated (repeated or crossing)");
   }
 }
 

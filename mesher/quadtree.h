@@ -180,6 +180,11 @@ struct PolygonTree {
 PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, int deeper = 0);
 // The same into `into`, reusing its memory (meshing surface after surface).
 void buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper = 0);
+// buildPolygonTree in two steps, for a caller that looks at the tree's input first: the frame
+// and input of the first tree it tries, into `into` (returns the depth of 5.2); then the tree
+// itself, deepened as buildPolygonTree does.
+int setUpPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper = 0);
+void buildSetUpTree(const PolygonWithHoles& polygon, int depth, PolygonTree& into);
 
 // The deepest tree buildPolygonTree makes: quadrant corners stay exact doubles.
 constexpr int kDeepestTree = 50;

@@ -307,12 +307,13 @@ size_t QualityRefiner::splitShortLeaves(const std::vector<int32_t>& leaves) {
 size_t refineForQuality(PolygonTree& built) { return QualityRefiner(built).refine(); }
 
 void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
-                   std::optional<QualityRefiner>& refiner) {
+                   std::optional<QualityRefiner>& refiner, int setUpDepth) {
   // A vertex leaf that could not be split far enough, the tree being as deep as it goes, gets a
   // tree kDeeperTree levels deeper, while its finest leaves stay well above its rounding.
   int maxDepth = -1;
   for (int deeper = 0;; deeper += kDeeperTree) {
-    buildPolygonTree(polygon, patchSize, into, deeper);
+    if (deeper == 0 && setUpDepth >= 0) buildSetUpTree(polygon, setUpDepth, into);
+    else buildPolygonTree(polygon, patchSize, into, deeper);
     if (into.tree.maxDepth <= maxDepth) continue;  // the vertices needed this depth anyway: tried
     maxDepth = into.tree.maxDepth;
     balance(into.tree);

@@ -79,10 +79,11 @@ size_t refineForQuality(PolygonTree& built);
 // A polygon's tree as the mesher meshes it, built into `into` (its memory reused):
 // buildPolygonTree, balance, the quality splits (all again in a deeper tree when a vertex leaf
 // ran out of depth), and no changes left recorded. `refiner` is
-// made over `into` when empty and kept for the next polygon. Throws std::invalid_argument as
-// buildPolygonTree does.
+// made over `into` when empty and kept for the next polygon. A `setUpDepth` of 0 or more says
+// that `into` holds the first tree's frame and input already (setUpPolygonTree gave that depth).
+// Throws std::invalid_argument as buildPolygonTree does.
 void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
-                   std::optional<QualityRefiner>& refiner);
+                   std::optional<QualityRefiner>& refiner, int setUpDepth = -1);
 // The same into a new tree.
 PolygonTree buildMeshTree(const PolygonWithHoles& polygon, double patchSize);
 
