@@ -435,7 +435,9 @@ Vec2 treePoint(const TreeFrame& frame, Vec2 plane) {
   Vec2 t = glm::clamp(frame.toTree(plane), Vec2{0}, Vec2{root});
   for (int k = 0; k < 2; ++k)
     if (std::abs(t[k] - std::round(t[k])) <= frame.gridSnap) t[k] = std::round(t[k]);
-  return t;
+  // Plus zero for a zero of either sign (the turn gives -0 beside +0 for alike points), so that
+  // repeats of a polygon have the same tree input bit for bit (MeshMemo).
+  return t + Vec2{0.0};
 }
 
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame) {

@@ -71,11 +71,17 @@ TreeFrame setupTreeFrame(const PolygonWithHoles& polygon, int maxDepth) {
   frame.stretch = std::max(1.0, nextPowerOfTwo(shortScaled)) / shortScaled;
 
   // Rounding in tree coordinates: of the root square's size, and of the plane coordinates (their
-  // magnitude, carried through the turn and the scale).
+  // magnitude, carried through the turn and the scale: a few roundings of each), with a margin.
+  // Taken down to a power of two, so that a polygon repeated nearby (at a magnitude a little
+  // different) has the same frame bit for bit and is found a repeat (MeshMemo); up, it kept a
+  // deeper tree from a few polygons that needed one.
   double magnitude = 0;
   for (const Vec2& p : polygon.outer) magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y)});
   constexpr double kEpsilon = 0x1p-52;
-  frame.rounding = std::max(16 * root * kEpsilon, 16 * magnitude * kEpsilon * frame.scale * frame.stretch);
+  const double rounding = std::max(16 * root * kEpsilon, 16 * magnitude * kEpsilon * frame.scale * frame.stretch);
+  int exponent = 0;
+  std::frexp(rounding, &exponent);  // rounding = m * 2^exponent, m in [0.5, 1)
+  frame.rounding = std::ldexp(1.0, exponent - 1);
   frame.gridSnap = std::max(1e-6, frame.rounding);
   return frame;
 }
