@@ -132,6 +132,7 @@ void LeafEmitter::reset(const PolygonWithHoles& polygon, size_t expectedLeaves) 
   ids_->reset(expectedLeaves / 8 + built_.tree.input.vertices.size(), std::exp2(built_.tree.maxDepth));
   vertices_.clear();
   vertices_.reserve(expectedLeaves * 2);
+  treePoints_.clear();
   vertices_.insert(vertices_.end(), polygon.outer.begin(), polygon.outer.end());
   for (const Ring2& hole : polygon.holes) vertices_.insert(vertices_.end(), hole.begin(), hole.end());
   // Input vertices take ids 0..n-1, as in the vertex list (two at one tree point cannot occur:
@@ -154,8 +155,12 @@ void LeafEmitter::addInputVertices(uint32_t first, const std::vector<Vec2>& plan
   bool added;
   for (size_t i = 0; i < plane.size(); ++i) {
     const uint32_t id = ids_->findOrAdd(built_.tree.input.vertices[first + i], added);
-    if (added) vertices_.push_back(plane[i]);
-    else vertices_[id] = plane[i];  // a grid point there already: it is the input vertex now
+    if (added) {
+      vertices_.push_back(plane[i]);
+      if (keepTreePoints_) treePoints_.push_back(built_.tree.input.vertices[first + i]);
+    } else {
+      vertices_[id] = plane[i];  // a grid point there already: it is the input vertex now
+    }
     inputToMesh_.push_back(id);
   }
 }
@@ -172,8 +177,13 @@ void LeafEmitter::emitAll(std::vector<std::array<uint32_t, 4>>& out) {
 
 uint32_t LeafEmitter::newPoint(const Vec2& at, bool listed) {
   const uint32_t id = listed ? ids_->addNew(at) : ids_->addUnlisted();
-  vertices_.push_back(built_.frame.toPlane(at));
+  addVertex(at);
   return id;
+}
+
+void LeafEmitter::addVertex(const Vec2& at) {
+  vertices_.push_back(built_.frame.toPlane(at));
+  if (keepTreePoints_) treePoints_.push_back(at);
 }
 
 namespace {
@@ -258,7 +268,7 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
       if (inOrder_) id = earlierId(q, region, p.at);
       if (id == Mesh::kNone) {
         id = ids_->findOrAdd(p.at, added);
-        if (added) vertices_.push_back(built_.frame.toPlane(p.at));
+        if (added) addVertex(p.at);
         handedOver_ = handedOver_ || (inOrder_ && added);
       }
     } else if ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0)) {
@@ -337,7 +347,7 @@ void LeafEmitter::emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::v
     const Vec2 at = fromTemplate ? inner : subdomains_.points()[index];
     bool added;
     const uint32_t id = ids_->findOrAdd(at, added);
-    if (added) vertices_.push_back(built_.frame.toPlane(at));
+    if (added) addVertex(at);
     return id;
   };
   for (const RingElement& piece : *elements) {

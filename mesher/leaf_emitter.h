@@ -49,6 +49,11 @@ class LeafEmitter {
   void addInputVertices(uint32_t first, const std::vector<Vec2>& plane);
 
   const std::vector<Vec2>& vertices() const { return vertices_; }
+  // While set (it is not at first), the tree coordinates of every vertex after the polygon's own
+  // points are kept too, in id order (reset() starts them over): a mesh kept for repeats of its
+  // polygon (MeshMemo) is placed anew from them.
+  void keepTreePoints(bool keep) { keepTreePoints_ = keep; }
+  const std::vector<Vec2>& treePoints() const { return treePoints_; }
   // Hands the vertices over and takes `other`'s memory for the next polygon's.
   void swapVertices(std::vector<Vec2>& other) { vertices_.swap(other); }
 
@@ -56,6 +61,8 @@ class LeafEmitter {
   const LeafRegion& region(int32_t q, const std::array<int32_t, 4>* adjacent = nullptr);
   void emit(int32_t q, const std::array<int32_t, 4>* adjacent, std::vector<std::array<uint32_t, 4>>& out);
   uint32_t newPoint(const Vec2& at, bool listed);
+  // Appends the vertex at tree point `at` (plane coordinates to vertices_).
+  void addVertex(const Vec2& at);
   // In tree order: the id leaf m recorded at point `at` of its east or north side, and the id a
   // leaf before q gave point `at` of q's west or south side; kNone when there is none.
   uint32_t recordedBy(int32_t m, const Vec2& at) const;
@@ -65,6 +72,8 @@ class LeafEmitter {
   const PolygonTree& built_;
   std::unique_ptr<PointIds> ids_;
   std::vector<Vec2> vertices_;
+  std::vector<Vec2> treePoints_;
+  bool keepTreePoints_ = false;
   std::vector<uint32_t> inputToMesh_;  // mesh vertex id of each tree input vertex
   LeafRegionBuilder regions_;
   std::vector<Vec2> ring_;  // tree coordinates

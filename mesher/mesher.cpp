@@ -2,6 +2,7 @@
 
 #include "mesher/balance.h"
 #include "mesher/leaf_emitter.h"
+#include "mesher/mesh_memo.h"
 #include "mesher/quality_refinement.h"
 #include "mesher/quadtree.h"
 
@@ -19,14 +20,19 @@ size_t Mesh::quadCount() const {
 Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings) { return Mesher().mesh(polygon, settings); }
 
 struct Mesher::State {
+  explicit State(size_t remembered) : memo(remembered) {}
   PolygonTree built;
   std::optional<LeafEmitter> emitter;  // bound to `built`, made on first use
   std::optional<QualityRefiner> refiner;  // the same
   std::vector<int32_t> shortLeaves;        // LeafEmitter::collectShortLeaves
+  MeshMemo memo;
+  size_t repeats = 0;
 };
 
-Mesher::Mesher() : state_(std::make_unique<State>()) {}
+Mesher::Mesher(size_t rememberedElements) : state_(std::make_unique<State>(rememberedElements)) {}
 Mesher::~Mesher() = default;
+
+size_t Mesher::repeats() const { return state_->repeats; }
 
 Mesh Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings) {
   Mesh mesh;
@@ -37,8 +43,19 @@ Mesh Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
 void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings, Mesh& out) {
   State& s = *state_;
   // Phases of chapter 5: tree setup, edge storage and balancing, then splits of vertex leaves
-  // that would mesh below the angle bound; then leaf by leaf meshing.
-  buildMeshTree(polygon, settings.patchSize, s.built, s.refiner);
+  // that would mesh below the angle bound; then leaf by leaf meshing. A repeat of a polygon
+  // met before takes its mesh, placed by its own frame.
+  const int depth = setUpPolygonTree(polygon, settings.patchSize, s.built);
+  if (const MeshMemo::Entry* repeat = s.memo.find(s.built, depth)) {
+    out.vertices.assign(polygon.outer.begin(), polygon.outer.end());
+    for (const Ring2& hole : polygon.holes) out.vertices.insert(out.vertices.end(), hole.begin(), hole.end());
+    for (const Vec2& p : repeat->treePoints) out.vertices.push_back(s.built.frame.toPlane(p));
+    out.elements.assign(repeat->elements.begin(), repeat->elements.end());
+    ++s.repeats;
+    return;
+  }
+  const int setUpMaxDepth = s.built.frame.maxDepth;
+  buildMeshTree(polygon, settings.patchSize, s.built, s.refiner, depth);
   // Every node has four children, so about a quarter of the rest are nodes (an estimate for
   // reserving: children of splits the refiner took back stay in the array unused).
   const size_t leaves = (3 * s.built.tree.quadrants.size() + 1) / 4;
@@ -50,6 +67,8 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
     s.emitter->swapVertices(out.vertices);
     s.emitter->reset(polygon, leaves);
   }
+  const bool keep = s.memo.keeps(leaves);
+  s.emitter->keepTreePoints(keep);
   out.elements.clear();
   out.elements.reserve(leaves * 2);
   s.shortLeaves.clear();
@@ -65,6 +84,7 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
     out.elements.clear();
     s.emitter->emitAll(out.elements);
   }
+  if (keep && s.built.frame.maxDepth == setUpMaxDepth) s.memo.add(out.elements, s.emitter->treePoints());
   s.emitter->swapVertices(out.vertices);
 }
 

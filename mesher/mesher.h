@@ -43,15 +43,21 @@ struct Mesh {
 Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings);
 
 // meshPolygon for polygon after polygon: keeps the last one's tree and scratch memory, so a
-// scene of many small surfaces is meshed without allocating much more than the meshes.
+// scene of many small surfaces is meshed without allocating much more than the meshes. It also
+// keeps the meshes of small polygons, up to `rememberedElements` elements in all (0: none), and
+// gives a repeat of one (the same shape, size and patch size, moved or turned so that it comes
+// into the tree bit for bit alike: mesh_memo.h) the same mesh, placed by its own frame.
 class Mesher {
  public:
-  Mesher();
+  static constexpr size_t kRememberedElements = size_t{1} << 18;
+  explicit Mesher(size_t rememberedElements = kRememberedElements);
   ~Mesher();
   Mesh mesh(const PolygonWithHoles& polygon, const MeshSettings& settings);
   // The same into `out`, reusing its memory: meshing polygon after polygon into one Mesh touches
   // no fresh pages, which for a million elements cost a tenth of the time.
   void mesh(const PolygonWithHoles& polygon, const MeshSettings& settings, Mesh& out);
+  // How many meshes so far were those of repeats.
+  size_t repeats() const;
 
  private:
   struct State;

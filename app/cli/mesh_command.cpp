@@ -69,6 +69,7 @@ int runMesh(const MeshOptions& options) {
 
   Tally tally;
   double meshMs = 0;
+  size_t repeats = 0;  // surfaces that were repeats of one meshed before (Mesher::repeats)
   OrderedJson dump;
   OrderedJson imported;
   if (engine::isPolygonCase(root)) {
@@ -93,6 +94,7 @@ int runMesh(const MeshOptions& options) {
     meshMs = bestOf(options.repeat, [&] {
       mesher::Mesher mesher;
       for (size_t i = 0; i < scene.surfaces.size(); ++i) meshes[i] = engine::meshSurface(scene.surfaces[i], mesher);
+      repeats = mesher.repeats();
     });
     for (const engine::SurfaceMesh& m : meshes) tally.add(m.polygon, m.mesh);
     if (!options.dump.empty()) {
@@ -120,7 +122,7 @@ int runMesh(const MeshOptions& options) {
         {"triangles", tally.elements - tally.quads}, {"vertices", tally.vertices},
         {"t_vertices", tally.tVertices}, {"min_angle_deg", tally.smallestAngle},
         {"min_aspect_ratio", tally.smallestAspect}, {"below_angle_bound", tally.belowAngleBound},
-        {"mesh_ms", meshMs},
+        {"mesh_ms", meshMs}, {"repeats", repeats},
     };
     if (!imported.is_null()) stats["import"] = imported;
     writeFileAtomically(options.stats, stats.dump(2) + "\n");

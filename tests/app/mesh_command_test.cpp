@@ -53,8 +53,11 @@ TEST(MeshCommand, SceneDumpNamesTheSurfaceOfEachElement) {
   MeshOptions options;
   options.input = std::string(WALKRAD_ASSETS) + "/furnace.json";
   options.dump = std::string(WALKRAD_TEST_OUTPUT) + "/furnace-dump.json";
+  options.stats = std::string(WALKRAD_TEST_OUTPUT) + "/furnace-stats.json";
   ASSERT_EQ(runMesh(options), 0);
   const nlohmann::json dump = readJson(options.dump);
+  // The cube's faces are alike: the first is meshed, the other five are its repeats.
+  EXPECT_EQ(readJson(options.stats)["repeats"], 5);
   EXPECT_EQ(dump["surface"].size(), dump["elements"].size());
   EXPECT_EQ(dump["vertices"][0].size(), 3u);
   // Six 1 m faces at 0.25 m patches: 16 quads each.

@@ -1,5 +1,8 @@
-// Meshing one surface: a triangle that is already a good element stays one.
+// Meshing one surface: a triangle that is already a good element stays one; a repeat of a
+// surface met before gets the mesh meshing it gives.
 #include "engine/surface_mesh.h"
+
+#include "engine/scene_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +26,23 @@ TEST(SurfaceMesh, AWellShapedTriangleWithinThePatchSizeIsOneElement) {
   // Longer than the patch size, or with an angle under the bound (10 degrees): the quadtree's.
   EXPECT_GT(meshSurface(triangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 0.5)).mesh.elements.size(), 1u);
   EXPECT_GT(meshSurface(triangle({0, 0, 0}, {0, 0, 0.176}, {1, 0, 0}, 2)).mesh.elements.size(), 1u);
+}
+
+// A scene's surfaces meshed by one Mesher, as a scene is loaded: the kitchen's boxes have
+// opposite faces alike, and its cabinets, doors and chairs repeat, so most surfaces are repeats
+// of one met before. Each gets the mesh, and the 3-D points, that meshing it alone gives.
+TEST(SurfaceMesh, RepeatsInTheKitchenGetTheMeshesMeshingGives) {
+  const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/kitchen.json");
+  mesher::Mesher shared;
+  for (const Surface& s : scene.surfaces) {
+    const SurfaceMesh once = meshSurface(s, shared);
+    mesher::Mesher alone(0);
+    const SurfaceMesh fresh = meshSurface(s, alone);
+    ASSERT_EQ(once.mesh.elements, fresh.mesh.elements);
+    ASSERT_EQ(once.mesh.vertices, fresh.mesh.vertices);
+    ASSERT_EQ(once.positions, fresh.positions);
+  }
+  EXPECT_GT(shared.repeats(), scene.surfaces.size() / 2);
 }
 
 }  // namespace
