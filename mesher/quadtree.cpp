@@ -417,18 +417,28 @@ int32_t Quadtree::leafAt(Vec2 p) const {
 
 int32_t Quadtree::adjacent(int32_t q, Side side) const {
   // Children are numbered SW 0, SE 1, NW 2, NE 3: bit 0 is east, bit 1 north. A sibling across
-  // the side is found at once; otherwise the parent's neighbour is, and its mirrored child.
-  const Quadrant& node = (*this)[q];
-  if (node.parent < 0) return -1;
-  const int32_t first = (*this)[node.parent].firstChild;
-  const int child = q - first;
+  // the side is found at once; otherwise the parent's neighbour is, and its mirrored child. Up
+  // the parent chain, then down the mirrored children as far as the tree goes.
   const bool horizontal = side == Side::West || side == Side::East;
   const int bit = horizontal ? 1 : 2;
   const bool towardHigh = side == Side::East || side == Side::North;
-  if (((child & bit) != 0) != towardHigh) return first + (child ^ bit);
-  const int32_t across = adjacent(node.parent, side);
-  if (across < 0 || (*this)[across].isLeaf()) return across;
-  return (*this)[across].firstChild + (child ^ bit);
+  std::array<uint8_t, kDeepestTree> climbed;  // the child numbers on the way up
+  size_t depth = 0;
+  int32_t across = q;
+  for (;;) {
+    const Quadrant& node = (*this)[across];
+    if (node.parent < 0) return -1;
+    const int32_t first = (*this)[node.parent].firstChild;
+    const int child = across - first;
+    if (((child & bit) != 0) != towardHigh) {
+      across = first + (child ^ bit);
+      break;
+    }
+    climbed[depth++] = static_cast<uint8_t>(child);
+    across = node.parent;
+  }
+  while (depth > 0 && !(*this)[across].isLeaf()) across = (*this)[across].firstChild + (climbed[--depth] ^ bit);
+  return across;
 }
 
 void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const { leavesFacing(adjacent(q, side), side, out); }
