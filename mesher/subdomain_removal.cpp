@@ -129,20 +129,29 @@ double SubdomainRemover::score() const {
 
 void SubdomainRemover::shape(size_t n, Vec2 shapeScale) {
   // Angles are judged with the ring scaled to its true proportions.
-  shaped_.assign(points_.begin(), points_.end());
-  for (Vec2& p : shaped_) p *= shapeScale;
+  shaped_.resize(points_.size());
+  for (size_t i = 0; i < points_.size(); ++i) shaped_[i] = points_[i] * shapeScale;
   // What each ring corner's elements can reach: the bound, or the ring's own angle where
-  // sharper; as a tangent for the quick test, in degrees for scores.
+  // sharper; as a tangent for the quick test, in degrees for scores. Written through pointers
+  // with each corner's neighbours carried along: this runs for every ring searched.
   static const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
-  reach_.assign(n + 1, kAngleBoundDeg);
-  tanReach_.assign(n + 1, kTanBound);
+  reach_.resize(n + 1);
+  tanReach_.resize(n + 1);
+  const Vec2* shaped = shaped_.data();
+  double* reach = reach_.data();
+  double* tanReach = tanReach_.data();
+  reach[n] = kAngleBoundDeg;
+  tanReach[n] = kTanBound;
+  Vec2 prev = shaped[n - 1], at = shaped[0];
   for (size_t i = 0; i < n; ++i) {
-    const Vec2 u = shaped_[(i + n - 1) % n] - shaped_[i], v = shaped_[(i + 1) % n] - shaped_[i];
+    const Vec2 next = shaped[i + 1 < n ? i + 1 : 0];
+    const Vec2 u = prev - at, v = next - at;
     const double dot = glm::dot(u, v), turn = v.x * u.y - v.y * u.x;  // > 0: a convex corner
-    if (turn > 0 && dot > 0 && turn < kTanBound * dot) {
-      tanReach_[i] = turn / dot;
-      reach_[i] = cornerAngleDeg(shaped_[(i + n - 1) % n], shaped_[i], shaped_[(i + 1) % n]);
-    }
+    const bool sharp = turn > 0 && dot > 0 && turn < kTanBound * dot;
+    tanReach[i] = sharp ? turn / dot : kTanBound;
+    reach[i] = sharp ? cornerAngleDeg(prev, at, next) : kAngleBoundDeg;
+    prev = at;
+    at = next;
   }
 }
 
