@@ -99,13 +99,12 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   const bool square = leaf.edgeCount == 0 && leaf.vertex < 0 && leaf.status == QuadStatus::Inside;
   int midpoints = 0, openSides = 0;
   bool deeper = false;  // some finer neighbour is more than one level finer
-  std::vector<int32_t>& across = across_;
   for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
+    // The west and south leaves are kept in the region (found there, not copied in).
+    std::vector<int32_t>& across = side == Side::West ? region.westLeaves : side == Side::South ? region.southLeaves : across_;
     across.clear();
     if (adjacent) tree.leavesFacing((*adjacent)[static_cast<size_t>(side)], side, across);
     else tree.neighbors(q, side, across);
-    if (side == Side::West) region.westLeaves.assign(across.begin(), across.end());
-    if (side == Side::South) region.southLeaves.assign(across.begin(), across.end());
     // Interior squares always mesh within the bound: their open sides are not worked out.
     bool open = !square;
     for (int32_t n : across) {

@@ -448,9 +448,10 @@ void Quadtree::leavesFacing(int32_t r, Side side, std::vector<int32_t>& out) con
   // A leaf there is the one neighbour; otherwise its leaves along the facing side, found in
   // `out` itself (no allocation): a node is replaced by its first facing child and the second is
   // appended.
-  static constexpr int32_t facing[4][2] = {{1, 3}, {0, 2}, {2, 3}, {0, 1}};  // SW 0, SE 1, NW 2, NE 3
-  const size_t start = out.size();
   out.push_back(r);
+  if ((*this)[r].isLeaf()) return;  // the usual case, answered before the loop
+  static constexpr int32_t facing[4][2] = {{1, 3}, {0, 2}, {2, 3}, {0, 1}};  // SW 0, SE 1, NW 2, NE 3
+  const size_t start = out.size() - 1;
   for (size_t i = start; i < out.size();) {
     const Quadrant& node = (*this)[out[i]];
     if (node.isLeaf()) {
