@@ -198,8 +198,6 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   });
   keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.second.at == b.second.at; }),
               keyed.end());
-  onBorder.clear();
-  for (const auto& [param, p] : keyed) onBorder.push_back(p);
 
   // An edge that only grazes a corner (its crossings snapped onto one point) leaves the square
   // wholly on one side: which, its own direction says at the centre.
@@ -207,8 +205,8 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   if (path.empty() || grazing) {
     const bool inside = grazing ? tree.insideAt(q, {x0 + s / 2, y0 + s / 2}) : leaf.status == QuadStatus::Inside;
     if (!inside) return region;
-    region.ring.assign(onBorder.begin(), onBorder.end());
-    if (!vertexOnBorder && !grazing) region.templateKey = midpointSides(onBorder, x0, y0, s);
+    for (const auto& [param, p] : keyed) region.ring.push_back(p);
+    if (!vertexOnBorder && !grazing) region.templateKey = midpointSides(region.ring, x0, y0, s);
     region.inner = {x0 + s / 2, y0 + s / 2};
     return region;
   }
