@@ -193,9 +193,17 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   std::vector<std::pair<double, RegionPoint>>& keyed = keyed_;
   keyed.clear();
   for (const RegionPoint& p : onBorder) keyed.push_back({border.param(p.at), p});
-  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+  auto before = [](const auto& a, const auto& b) {
     return a.first < b.first || (a.first == b.first && a.second.inputVertex > b.second.inputVertex);
-  });
+  };
+  // Mostly a handful of points: sorted by insertion in place, the order std::sort gives up to 16
+  // elements (its own insertion sort) without its set-up.
+  if (keyed.size() <= 16) {
+    for (size_t i = 1; i < keyed.size(); ++i)
+      for (size_t j = i; j > 0 && before(keyed[j], keyed[j - 1]); --j) std::swap(keyed[j], keyed[j - 1]);
+  } else {
+    std::sort(keyed.begin(), keyed.end(), before);
+  }
   keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.second.at == b.second.at; }),
               keyed.end());
 
