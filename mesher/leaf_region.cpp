@@ -103,8 +103,10 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     // The west and south leaves are kept in the region (found there, not copied in).
     std::vector<int32_t>& across = side == Side::West ? region.westLeaves : side == Side::South ? region.southLeaves : across_;
     across.clear();
-    if (adjacent) tree.leavesFacing((*adjacent)[static_cast<size_t>(side)], side, across);
-    else tree.neighbors(q, side, across);
+    // Quadtree::neighbors, with a leaf across (the usual case) taken without a call.
+    const int32_t r = adjacent ? (*adjacent)[static_cast<size_t>(side)] : tree.adjacent(q, side);
+    if (r >= 0 && tree[r].isLeaf()) across.push_back(r);
+    else tree.leavesFacing(r, side, across);
     // Interior squares always mesh within the bound: their open sides are not worked out.
     bool open = !square;
     for (int32_t n : across) {
