@@ -53,14 +53,15 @@ bool RingBoundary::onBoundary(const std::vector<Vec2>& ring, size_t i) const {
          ((openSides & 4) && a.y == y0 && b.y == y0) || ((openSides & 8) && a.y == y0 + size && b.y == y0 + size);
 }
 
-void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge) {
-  const std::vector<uint32_t>& run = run_;
+void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge, size_t length) {
+  const uint32_t* run = run_.data();
+  const Vec2* p = points.data();
   size_t i = 0;
-  while (i + 1 < run.size()) {
+  while (i + 1 < length) {
     const uint32_t a = run[i], b = run[i + 1];
-    if (i + 2 < run.size()) {
+    if (i + 2 < length) {
       const uint32_t c = run[i + 2];
-      if (strictlyConvexQuad(points[hinge], points[a], points[b], points[c], rounding_)) {
+      if (strictlyConvexQuad(p[hinge], p[a], p[b], p[c], rounding_)) {
         trial_.push_back({{hinge, a, b, c}, 4});
         i += 2;
         continue;
@@ -71,36 +72,44 @@ void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge)
   }
 }
 
+// The fans below write their runs into run_, sized beforehand, through a pointer: every ring
+// searched tries them from each of its points.
 bool SubdomainRemover::fanFromHinge(const std::vector<Vec2>& points, size_t ringSize, size_t hinge) {
   const size_t n = ringSize;
   const auto h = static_cast<uint32_t>(hinge);
+  const Vec2* p = points.data();
   trial_.clear();
-  run_.clear();
+  run_.resize(n);
+  uint32_t* run = run_.data();
+  size_t length = 0;
   for (size_t k = 1; k < n; ++k) {
     const auto i = static_cast<uint32_t>((hinge + k) % n);
-    if (points[i] == points[h]) {  // the region is pinched here: a new run starts
-      mergeRun(points, h);
-      run_.clear();
+    if (p[i] == p[h]) {  // the region is pinched here: a new run starts
+      mergeRun(points, h, length);
+      length = 0;
       continue;
     }
-    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], points[h], rounding_)) return false;
-    run_.push_back(i);
+    if (length > 0 && !turnsLeft(p[run[length - 1]], p[i], p[h], rounding_)) return false;
+    run[length++] = i;
   }
-  mergeRun(points, h);
+  mergeRun(points, h, length);
   return true;
 }
 
 bool SubdomainRemover::fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start) {
   const size_t n = ringSize;
-  const Vec2 inner = points[n];
+  const Vec2* p = points.data();
+  const Vec2 inner = p[n];
   trial_.clear();
-  run_.clear();
+  run_.resize(n + 1);
+  uint32_t* run = run_.data();
+  size_t length = 0;
   for (size_t k = 0; k <= n; ++k) {
     const auto i = static_cast<uint32_t>((start + k) % n);
-    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], inner, rounding_)) return false;
-    run_.push_back(i);
+    if (length > 0 && !turnsLeft(p[run[length - 1]], p[i], inner, rounding_)) return false;
+    run[length++] = i;
   }
-  mergeRun(points, static_cast<uint32_t>(n));
+  mergeRun(points, static_cast<uint32_t>(n), length);
   return true;
 }
 
