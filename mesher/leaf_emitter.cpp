@@ -188,11 +188,10 @@ void LeafEmitter::addVertex(const Vec2& at) {
 
 namespace {
 
-// Which of a leaf's recorded east and north positions (LeafEmitter::eastAndNorth_) point p is,
-// or -1.
-int eastOrNorthPosition(const Quadtree& tree, const Quadrant& leaf, const Vec2& p) {
-  const double s = static_cast<double>(tree.edgeLength(leaf));
-  const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
+// Which of the recorded east and north positions (LeafEmitter::eastAndNorth_) of the leaf
+// square at (x0, y0) of edge s point p is, or -1.
+int eastOrNorthPosition(double x0, double y0, double s, const Vec2& p) {
+  const double x1 = x0 + s, y1 = y0 + s;
   if (p.x == x1) return p.y == y0 ? 0 : p.y == y0 + s / 2 ? 1 : p.y == y1 ? 2 : -1;
   if (p.y == y1) return p.x == x0 ? 4 : p.x == x0 + s / 2 ? 3 : -1;
   return -1;
@@ -203,7 +202,8 @@ int eastOrNorthPosition(const Quadtree& tree, const Quadrant& leaf, const Vec2& 
 uint32_t LeafEmitter::recordedBy(int32_t m, const Vec2& at) const {
   const Quadrant& leaf = built_.tree[m];
   if (leaf.status == QuadStatus::Outside) return Mesh::kNone;
-  const int position = eastOrNorthPosition(built_.tree, leaf, at);
+  const int position = eastOrNorthPosition(static_cast<double>(leaf.x), static_cast<double>(leaf.y),
+                                            static_cast<double>(built_.tree.edgeLength(leaf)), at);
   return position < 0 ? Mesh::kNone : eastAndNorth_[static_cast<size_t>(m)][static_cast<size_t>(position)];
 }
 
@@ -232,16 +232,6 @@ uint32_t LeafEmitter::earlierId(int32_t q, const LeafRegion& region, const Vec2&
   return Mesh::kNone;
 }
 
-void LeafEmitter::recordEastAndNorth(int32_t q) {
-  const Quadrant& leaf = built_.tree[q];
-  auto& ids = eastAndNorth_[static_cast<size_t>(q)];
-  ids.fill(Mesh::kNone);
-  for (size_t i = 0; i < ring_.size(); ++i) {
-    const int position = eastOrNorthPosition(built_.tree, leaf, ring_[i]);
-    if (position >= 0) ids[static_cast<size_t>(position)] = ringIds_[i];
-  }
-}
-
 const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* adjacent) {
   const LeafRegion& region = regions_.build(q, adjacent);
   ring_.clear();
@@ -251,8 +241,13 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
   const double s = static_cast<double>(tree.edgeLength(leaf));
   const double x0 = static_cast<double>(leaf.x), y0 = static_cast<double>(leaf.y), x1 = x0 + s, y1 = y0 + s;
   bool added;
+  // In tree order the ids on the leaf's east and north sides are recorded as they are found
+  // (only later leaves read them).
+  std::array<uint32_t, 5>* recorded = inOrder_ && leaf.status != QuadStatus::Outside ? &eastAndNorth_[static_cast<size_t>(q)] : nullptr;
+  if (recorded) recorded->fill(Mesh::kNone);
   for (const RegionPoint& p : region.ring) {
     uint32_t id = Mesh::kNone;
+    const int position = recorded ? eastOrNorthPosition(x0, y0, s, p.at) : -1;
     auto onBorder = [&] {
       return (p.at.x == x0 || p.at.x == x1) ? (p.at.y >= y0 && p.at.y <= y1)
                                             : (p.at.y == y0 || p.at.y == y1) && p.at.x >= x0 && p.at.x <= x1;
@@ -281,7 +276,7 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
           if (ring_[i] == p.at) id = ringIds_[i];
       if (id == Mesh::kNone && handedOver_) id = ids_->find(p.at);
       // A point at a recorded position is found there; any other one goes in the table.
-      if (id == Mesh::kNone) id = newPoint(p.at, eastOrNorthPosition(tree, leaf, p.at) < 0);
+      if (id == Mesh::kNone) id = newPoint(p.at, position < 0);
     } else {
       id = earlierId(q, region, p.at);
       if (id == Mesh::kNone) id = newPoint(p.at, true);
@@ -290,8 +285,8 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
     // Shapes are judged in tree coordinates, where points on one grid line are exactly in line;
     // plane coordinates far from the origin would blur a straight corner into a convex one.
     ring_.push_back(p.at);
+    if (position >= 0) (*recorded)[static_cast<size_t>(position)] = id;
   }
-  if (inOrder_ && leaf.status != QuadStatus::Outside) recordEastAndNorth(q);
   // Points may be added along open sides (RingBoundary::openSides): a ring whose sides open or
   // close as a neighbour turns inside or out is not the same ring.
   if (region.templateKey < 0 && region.boundary.openSides != 0) ringIds_.push_back(kOpenSidesMark | static_cast<uint32_t>(region.boundary.openSides));

@@ -67,7 +67,6 @@ class LeafEmitter {
   // leaf before q gave point `at` of q's west or south side; kNone when there is none.
   uint32_t recordedBy(int32_t m, const Vec2& at) const;
   uint32_t earlierId(int32_t q, const LeafRegion& region, const Vec2& at) const;
-  void recordEastAndNorth(int32_t q);
 
   const PolygonTree& built_;
   std::unique_ptr<PointIds> ids_;

@@ -99,13 +99,14 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   const bool square = leaf.edgeCount == 0 && leaf.vertex < 0 && leaf.status == QuadStatus::Inside;
   int midpoints = 0, openSides = 0;
   bool deeper = false;  // some finer neighbour is more than one level finer
-  std::vector<int32_t>& across = across_;
   for (Side side : {Side::West, Side::East, Side::South, Side::North}) {
+    // The west and south leaves are kept in the region (found there, not copied in).
+    std::vector<int32_t>& across = side == Side::West ? region.westLeaves : side == Side::South ? region.southLeaves : across_;
     across.clear();
-    if (adjacent) tree.leavesFacing((*adjacent)[static_cast<size_t>(side)], side, across);
-    else tree.neighbors(q, side, across);
-    if (side == Side::West) region.westLeaves.assign(across.begin(), across.end());
-    if (side == Side::South) region.southLeaves.assign(across.begin(), across.end());
+    // Quadtree::neighbors, with a leaf across (the usual case) taken without a call.
+    const int32_t r = adjacent ? (*adjacent)[static_cast<size_t>(side)] : tree.adjacent(q, side);
+    if (r >= 0 && tree[r].isLeaf()) across.push_back(r);
+    else tree.leavesFacing(r, side, across);
     // Interior squares always mesh within the bound: their open sides are not worked out.
     bool open = !square;
     for (int32_t n : across) {
@@ -194,13 +195,19 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   std::vector<std::pair<double, RegionPoint>>& keyed = keyed_;
   keyed.clear();
   for (const RegionPoint& p : onBorder) keyed.push_back({border.param(p.at), p});
-  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+  auto before = [](const auto& a, const auto& b) {
     return a.first < b.first || (a.first == b.first && a.second.inputVertex > b.second.inputVertex);
-  });
+  };
+  // Mostly a handful of points: sorted by insertion in place, the order std::sort gives up to 16
+  // elements (its own insertion sort) without its set-up.
+  if (keyed.size() <= 16) {
+    for (size_t i = 1; i < keyed.size(); ++i)
+      for (size_t j = i; j > 0 && before(keyed[j], keyed[j - 1]); --j) std::swap(keyed[j], keyed[j - 1]);
+  } else {
+    std::sort(keyed.begin(), keyed.end(), before);
+  }
   keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.second.at == b.second.at; }),
               keyed.end());
-  onBorder.clear();
-  for (const auto& [param, p] : keyed) onBorder.push_back(p);
 
   // An edge that only grazes a corner (its crossings snapped onto one point) leaves the square
   // wholly on one side: which, its own direction says at the centre.
@@ -208,8 +215,8 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
   if (path.empty() || grazing) {
     const bool inside = grazing ? tree.insideAt(q, {x0 + s / 2, y0 + s / 2}) : leaf.status == QuadStatus::Inside;
     if (!inside) return region;
-    region.ring.assign(onBorder.begin(), onBorder.end());
-    if (!vertexOnBorder && !grazing) region.templateKey = midpointSides(onBorder, x0, y0, s);
+    for (const auto& [param, p] : keyed) region.ring.push_back(p);
+    if (!vertexOnBorder && !grazing) region.templateKey = midpointSides(region.ring, x0, y0, s);
     region.inner = {x0 + s / 2, y0 + s / 2};
     return region;
   }

@@ -40,24 +40,51 @@ class QuadrantStack {
   size_t size_ = 0;
 };
 
-// Visits the leaves below quadrant `from` that `meets` accepts (it is asked of every quadrant on
-// the way down). `atLeaf` may split the leaf and answer Again to have it visited as a node, or
-// Fail to stop; the result is false then.
-template <typename Meets, typename AtLeaf>
-bool descend(const Quadtree& tree, int32_t from, Meets meets, AtLeaf atLeaf) {
+// Visits the leaves below quadrant `from` (which must meet) that `meets` accepts:
+// `pushMeeting(node, stack)` pushes, of a node's children SW to NE, those it meets. `atLeaf` may
+// split the leaf and answer Again to have it visited as a node, or Fail to stop; the result is
+// false then.
+template <typename PushMeeting, typename AtLeaf>
+bool walk(int32_t from, PushMeeting pushMeeting, AtLeaf atLeaf) {
   QuadrantStack stack{from};
   while (!stack.empty()) {
     const int32_t q = stack.pop();
-    if (!meets(q)) continue;
-    if (!tree[q].isLeaf()) {
-      for (int32_t c = 0; c < 4; ++c) stack.push(tree[q].firstChild + c);
-      continue;
-    }
+    if (pushMeeting(q, stack)) continue;
     const Visit visit = atLeaf(q);
     if (visit == Visit::Fail) return false;
     if (visit == Visit::Again) stack.push(q);
   }
   return true;
+}
+
+// walk() asking `meets` of every quadrant on the way down.
+template <typename Meets, typename AtLeaf>
+bool descend(const Quadtree& tree, int32_t from, Meets meets, AtLeaf atLeaf) {
+  if (!meets(from)) return true;
+  return walk(from, [&](int32_t q, QuadrantStack& stack) {
+    if (tree[q].isLeaf()) return false;
+    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c)
+      if (meets(c)) stack.push(c);
+    return true;
+  }, atLeaf);
+}
+
+// descend() to the leaves whose closed square holds p. A node's children that hold p are those on
+// its side of each midline (both, on the line): two comparisons instead of each child's square.
+template <typename AtLeaf>
+bool descendToPoint(const Quadtree& tree, Vec2 p, AtLeaf atLeaf) {
+  const auto root = static_cast<double>(tree.edgeLength(tree[0]));
+  if (!(0 <= p.x && p.x <= root && 0 <= p.y && p.y <= root)) return true;
+  return walk(0, [&](int32_t q, QuadrantStack& stack) {
+    const Quadrant& node = tree[q];
+    if (node.isLeaf()) return false;
+    const auto half = static_cast<double>(tree.edgeLength(node) / 2);
+    const double midX = static_cast<double>(node.x) + half, midY = static_cast<double>(node.y) + half;
+    const bool west = p.x <= midX, east = p.x >= midX, south = p.y <= midY, north = p.y >= midY;
+    for (int c = 0; c < 4; ++c)
+      if ((c & 1 ? east : west) && (c & 2 ? north : south)) stack.push(node.firstChild + c);
+    return true;
+  }, atLeaf);
 }
 
 bool inClosedSquare(Vec2 p, double x0, double y0, double x1, double y1) {
@@ -114,7 +141,7 @@ bool Quadtree::accepts(const Quadrant& leaf, uint32_t e) const {
 
 bool Quadtree::insertVertex(uint32_t v) {
   const Vec2 p = input.vertices[v];
-  return descend(*this, 0, [&](int32_t q) { return holdsPoint(q, p); }, [&](int32_t q) {
+  return descendToPoint(*this, p, [&](int32_t q) {
     Quadrant& quad = quadrants[static_cast<size_t>(q)];
     const bool edgesEndHere = std::all_of(quad.edges.begin(), quad.edges.begin() + quad.edgeCount, [&](uint32_t e) {
       return input.edges[e][0] == v || input.edges[e][1] == v;
@@ -235,7 +262,7 @@ void Quadtree::forgetEdge(uint32_t e) {
 }
 
 void Quadtree::forgetVertex(uint32_t v) {
-  descend(*this, 0, [&](int32_t q) { return holdsPoint(q, input.vertices[v]); }, [&](int32_t q) {
+  descendToPoint(*this, input.vertices[v], [&](int32_t q) {
     if (quadrants[static_cast<size_t>(q)].vertex == static_cast<int32_t>(v)) quadrants[static_cast<size_t>(q)].vertex = -1;
     return Visit::Done;
   });
@@ -358,7 +385,7 @@ void Quadtree::vertexLeaves(std::vector<int32_t>& out) const {
   // From each vertex down to the leaves holding it, instead of a walk through every leaf.
   out.clear();
   for (const Vec2& p : input.vertices)
-    descend(*this, 0, [&](int32_t q) { return holdsPoint(q, p); }, [&](int32_t q) {
+    descendToPoint(*this, p, [&](int32_t q) {
       if ((*this)[q].vertex >= 0) out.push_back(q);
       return Visit::Done;
     });
@@ -390,18 +417,28 @@ int32_t Quadtree::leafAt(Vec2 p) const {
 
 int32_t Quadtree::adjacent(int32_t q, Side side) const {
   // Children are numbered SW 0, SE 1, NW 2, NE 3: bit 0 is east, bit 1 north. A sibling across
-  // the side is found at once; otherwise the parent's neighbour is, and its mirrored child.
-  const Quadrant& node = (*this)[q];
-  if (node.parent < 0) return -1;
-  const int32_t first = (*this)[node.parent].firstChild;
-  const int child = q - first;
+  // the side is found at once; otherwise the parent's neighbour is, and its mirrored child. Up
+  // the parent chain, then down the mirrored children as far as the tree goes.
   const bool horizontal = side == Side::West || side == Side::East;
   const int bit = horizontal ? 1 : 2;
   const bool towardHigh = side == Side::East || side == Side::North;
-  if (((child & bit) != 0) != towardHigh) return first + (child ^ bit);
-  const int32_t across = adjacent(node.parent, side);
-  if (across < 0 || (*this)[across].isLeaf()) return across;
-  return (*this)[across].firstChild + (child ^ bit);
+  std::array<uint8_t, kDeepestTree> climbed;  // the child numbers on the way up
+  size_t depth = 0;
+  int32_t across = q;
+  for (;;) {
+    const Quadrant& node = (*this)[across];
+    if (node.parent < 0) return -1;
+    const int32_t first = (*this)[node.parent].firstChild;
+    const int child = across - first;
+    if (((child & bit) != 0) != towardHigh) {
+      across = first + (child ^ bit);
+      break;
+    }
+    climbed[depth++] = static_cast<uint8_t>(child);
+    across = node.parent;
+  }
+  while (depth > 0 && !(*this)[across].isLeaf()) across = (*this)[across].firstChild + (climbed[--depth] ^ bit);
+  return across;
 }
 
 void Quadtree::neighbors(int32_t q, Side side, std::vector<int32_t>& out) const { leavesFacing(adjacent(q, side), side, out); }
@@ -411,9 +448,10 @@ void Quadtree::leavesFacing(int32_t r, Side side, std::vector<int32_t>& out) con
   // A leaf there is the one neighbour; otherwise its leaves along the facing side, found in
   // `out` itself (no allocation): a node is replaced by its first facing child and the second is
   // appended.
-  static constexpr int32_t facing[4][2] = {{1, 3}, {0, 2}, {2, 3}, {0, 1}};  // SW 0, SE 1, NW 2, NE 3
-  const size_t start = out.size();
   out.push_back(r);
+  if ((*this)[r].isLeaf()) return;  // the usual case, answered before the loop
+  static constexpr int32_t facing[4][2] = {{1, 3}, {0, 2}, {2, 3}, {0, 1}};  // SW 0, SE 1, NW 2, NE 3
+  const size_t start = out.size() - 1;
   for (size_t i = start; i < out.size();) {
     const Quadrant& node = (*this)[out[i]];
     if (node.isLeaf()) {

@@ -53,14 +53,15 @@ bool RingBoundary::onBoundary(const std::vector<Vec2>& ring, size_t i) const {
          ((openSides & 4) && a.y == y0 && b.y == y0) || ((openSides & 8) && a.y == y0 + size && b.y == y0 + size);
 }
 
-void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge) {
-  const std::vector<uint32_t>& run = run_;
+void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge, size_t length) {
+  const uint32_t* run = run_.data();
+  const Vec2* p = points.data();
   size_t i = 0;
-  while (i + 1 < run.size()) {
+  while (i + 1 < length) {
     const uint32_t a = run[i], b = run[i + 1];
-    if (i + 2 < run.size()) {
+    if (i + 2 < length) {
       const uint32_t c = run[i + 2];
-      if (strictlyConvexQuad(points[hinge], points[a], points[b], points[c], rounding_)) {
+      if (strictlyConvexQuad(p[hinge], p[a], p[b], p[c], rounding_)) {
         trial_.push_back({{hinge, a, b, c}, 4});
         i += 2;
         continue;
@@ -71,36 +72,44 @@ void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge)
   }
 }
 
+// The fans below write their runs into run_, sized beforehand, through a pointer: every ring
+// searched tries them from each of its points.
 bool SubdomainRemover::fanFromHinge(const std::vector<Vec2>& points, size_t ringSize, size_t hinge) {
   const size_t n = ringSize;
   const auto h = static_cast<uint32_t>(hinge);
+  const Vec2* p = points.data();
   trial_.clear();
-  run_.clear();
+  run_.resize(n);
+  uint32_t* run = run_.data();
+  size_t length = 0;
   for (size_t k = 1; k < n; ++k) {
     const auto i = static_cast<uint32_t>((hinge + k) % n);
-    if (points[i] == points[h]) {  // the region is pinched here: a new run starts
-      mergeRun(points, h);
-      run_.clear();
+    if (p[i] == p[h]) {  // the region is pinched here: a new run starts
+      mergeRun(points, h, length);
+      length = 0;
       continue;
     }
-    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], points[h], rounding_)) return false;
-    run_.push_back(i);
+    if (length > 0 && !turnsLeft(p[run[length - 1]], p[i], p[h], rounding_)) return false;
+    run[length++] = i;
   }
-  mergeRun(points, h);
+  mergeRun(points, h, length);
   return true;
 }
 
 bool SubdomainRemover::fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start) {
   const size_t n = ringSize;
-  const Vec2 inner = points[n];
+  const Vec2* p = points.data();
+  const Vec2 inner = p[n];
   trial_.clear();
-  run_.clear();
+  run_.resize(n + 1);
+  uint32_t* run = run_.data();
+  size_t length = 0;
   for (size_t k = 0; k <= n; ++k) {
     const auto i = static_cast<uint32_t>((start + k) % n);
-    if (!run_.empty() && !turnsLeft(points[run_.back()], points[i], inner, rounding_)) return false;
-    run_.push_back(i);
+    if (length > 0 && !turnsLeft(p[run[length - 1]], p[i], inner, rounding_)) return false;
+    run[length++] = i;
   }
-  mergeRun(points, static_cast<uint32_t>(n));
+  mergeRun(points, static_cast<uint32_t>(n), length);
   return true;
 }
 
@@ -129,20 +138,29 @@ double SubdomainRemover::score() const {
 
 void SubdomainRemover::shape(size_t n, Vec2 shapeScale) {
   // Angles are judged with the ring scaled to its true proportions.
-  shaped_.assign(points_.begin(), points_.end());
-  for (Vec2& p : shaped_) p *= shapeScale;
+  shaped_.resize(points_.size());
+  for (size_t i = 0; i < points_.size(); ++i) shaped_[i] = points_[i] * shapeScale;
   // What each ring corner's elements can reach: the bound, or the ring's own angle where
-  // sharper; as a tangent for the quick test, in degrees for scores.
+  // sharper; as a tangent for the quick test, in degrees for scores. Written through pointers
+  // with each corner's neighbours carried along: this runs for every ring searched.
   static const double kTanBound = std::tan(kAngleBoundDeg * std::numbers::pi / 180);
-  reach_.assign(n + 1, kAngleBoundDeg);
-  tanReach_.assign(n + 1, kTanBound);
+  reach_.resize(n + 1);
+  tanReach_.resize(n + 1);
+  const Vec2* shaped = shaped_.data();
+  double* reach = reach_.data();
+  double* tanReach = tanReach_.data();
+  reach[n] = kAngleBoundDeg;
+  tanReach[n] = kTanBound;
+  Vec2 prev = shaped[n - 1], at = shaped[0];
   for (size_t i = 0; i < n; ++i) {
-    const Vec2 u = shaped_[(i + n - 1) % n] - shaped_[i], v = shaped_[(i + 1) % n] - shaped_[i];
+    const Vec2 next = shaped[i + 1 < n ? i + 1 : 0];
+    const Vec2 u = prev - at, v = next - at;
     const double dot = glm::dot(u, v), turn = v.x * u.y - v.y * u.x;  // > 0: a convex corner
-    if (turn > 0 && dot > 0 && turn < kTanBound * dot) {
-      tanReach_[i] = turn / dot;
-      reach_[i] = cornerAngleDeg(shaped_[(i + n - 1) % n], shaped_[i], shaped_[(i + 1) % n]);
-    }
+    const bool sharp = turn > 0 && dot > 0 && turn < kTanBound * dot;
+    tanReach[i] = sharp ? turn / dot : kTanBound;
+    reach[i] = sharp ? cornerAngleDeg(prev, at, next) : kAngleBoundDeg;
+    prev = at;
+    at = next;
   }
 }
 

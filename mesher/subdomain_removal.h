@@ -72,7 +72,8 @@ class SubdomainRemover {
   // Fans the ring around the inner point points[ringSize], starting at ring[start]; false when
   // the point does not see some ring edge.
   bool fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start);
-  void mergeRun(const std::vector<Vec2>& points, uint32_t hinge);
+  // The fan of run_'s first `length` points around points[hinge], merged as above, into trial_.
+  void mergeRun(const std::vector<Vec2>& points, uint32_t hinge, size_t length);
   // The best fan of points_ (the first n a ring, then the inner point when `hasInner`) into
   // best_, from ring points too unless `hinges` is false; returns its score.
   double search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale, bool hinges = true);
