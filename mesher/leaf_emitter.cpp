@@ -268,7 +268,7 @@ const LeafRegion& LeafEmitter::region(int32_t q, const std::array<int32_t, 4>* a
       }
     } else if ((p.at.x == x1 && p.at.y > y0) || (p.at.y == y1 && p.at.x > x0)) {
       // New (see inOrder_), unless it is the leaf's input vertex or this ring had it already
-      // (a template's ring is known to be free of both).
+      // (a template's ring has no point twice).
       if (leaf.vertex >= 0 && p.at == tree.input.vertices[static_cast<size_t>(leaf.vertex)])
         id = inputToMesh_[static_cast<size_t>(leaf.vertex)];
       if (region.templateKey < 0)

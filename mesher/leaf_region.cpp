@@ -216,7 +216,9 @@ const LeafRegion& LeafRegionBuilder::build(int32_t q, const std::array<int32_t, 
     const bool inside = grazing ? tree.insideAt(q, {x0 + s / 2, y0 + s / 2}) : leaf.status == QuadStatus::Inside;
     if (!inside) return region;
     for (const auto& [param, p] : keyed) region.ring.push_back(p);
-    if (!vertexOnBorder && !grazing) region.templateKey = midpointSides(region.ring, x0, y0, s);
+    // A whole square meshes as its template, also with the polygon's vertex at a corner (the
+    // corner of a rectangle): its shape is the same.
+    if (!grazing) region.templateKey = midpointSides(region.ring, x0, y0, s);
     region.inner = {x0 + s / 2, y0 + s / 2};
     return region;
   }

@@ -23,9 +23,10 @@ struct LeafRegion {
   // crossing, the vertex, exit crossing), the rest along the border. Not filled in for
   // templated squares.
   RingBoundary boundary;
-  // Interior squares (no edge, no vertex): which of their sides carry one midpoint T-vertex, as
-  // bits (1 west, 2 east, 4 south, 8 north); their rings then start at the lower-left corner and
-  // differ only in that. -1 for every other leaf.
+  // Whole squares (no edge through them; a vertex, if any, at a corner or a side's midpoint):
+  // which of their sides carry one midpoint T-vertex, as bits (1 west, 2 east, 4 south, 8
+  // north); their rings then start at the lower-left corner and differ only in that. -1 for
+  // every other leaf.
   int templateKey = -1;
   // A point its elements may share inside the leaf: the centre of a whole square, else the
   // region's centroid. Only this leaf can use it, so it cannot make a T-vertex.
