@@ -16,8 +16,8 @@ struct TreeFrame {
   int shortAxis = 1;     // the tree axis (0 = x, 1 = y) that `stretch` applies to
   // How far a tree point may lie from where its plane point does, in tree units: the rounding of
   // tree coordinates (a deep root square) and of plane coordinates (far from the origin), carried
-  // through the turn and the scale. An element's corner must turn by more than this can undo, or
-  // it may turn the other way in the plane.
+  // through the turn and the scale, as a power of two. An element's corner must turn by more than
+  // this can undo, or it may turn the other way in the plane.
   double rounding = 0;
   // Tree coordinates this close to an integer are taken to lie on that grid line: 1e-6 tree
   // units, or the rounding where that is coarser, so points that belong on a line are not left
