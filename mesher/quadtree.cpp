@@ -40,10 +40,10 @@ class QuadrantStack {
   size_t size_ = 0;
 };
 
-// Visits the leaves below quadrant `from` (which must meet) that `meets` accepts:
-// `pushMeeting(node, stack)` pushes, of a node's children SW to NE, those it meets. `atLeaf` may
-// split the leaf and answer Again to have it visited as a node, or Fail to stop; the result is
-// false then.
+// Visits leaves from quadrant `from` down: `pushMeeting(q, stack)` answers false for a leaf, and
+// for a node pushes those of its children (SW to NE) the walk goes on into. `atLeaf` may split
+// the leaf and answer Again to have it visited as a node, or Fail to stop; the result is false
+// then.
 template <typename PushMeeting, typename AtLeaf>
 bool walk(int32_t from, PushMeeting pushMeeting, AtLeaf atLeaf) {
   QuadrantStack stack{from};
