@@ -2,15 +2,28 @@
 #include "app/cli/check_command.h"
 #include "app/cli/export_command.h"
 #include "app/cli/mesh_command.h"
+#include "app/cli/number_option.h"
 #include "app/cli/render_command.h"
 #include "app/window/walk_window.h"
 #include "engine/diagnostics.h"
+#include "engine/scene_loader.h"
 
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 
 namespace {
+
+using app::addNumberOption;
+
+// Limits of the numeric options (numberCheck refuses anything else, NaN and infinities first).
+// Lengths and the refinement threshold are the scene file's.
+constexpr app::NumberLimits kImageSize = app::inRange(1, 16384);
+constexpr app::NumberLimits kWindowSize = app::inRange(64, 16384);
+constexpr app::NumberLimits kThreads = app::inRange(1, 64);
+constexpr app::NumberLimits kLength = app::positiveUpTo(engine::kMaxLength);
+// A radiance scale a float holds with room to spare: radiance times it stays finite.
+constexpr app::NumberLimits kExposure = app::inRange(1e-12, 1e12);
 
 // What a glTF model may need beside it: its units and its sidecar.
 void addModelOptions(CLI::App* command, engine::LoadOptions& load) {
@@ -20,25 +33,22 @@ void addModelOptions(CLI::App* command, engine::LoadOptions& load) {
 
 void addAdaptOptions(CLI::App& command, app::AdaptOptions& options) {
   CLI::Option* threshold =
-      command.add_option("--adapt-threshold", options.threshold,
-                         "refine elements whose luminance differs from a neighbour's by more than this fraction of "
-                         "their mean (turns adaptive refinement on; default 0.25 or the scene's settings.adaptive)")
-          ->check(CLI::PositiveNumber & CLI::Range(0.0, 10.0));
-  CLI::Option* size = command.add_option("--min-element", options.minElementSize,
-                                         "refine no element into parts narrower than this, in scene units (turns "
-                                         "adaptive refinement on; default a quarter of the patch size)")
-                          ->check(CLI::PositiveNumber);
+      addNumberOption(command, "--adapt-threshold", options.threshold, app::positiveUpTo(10),
+                      "refine elements whose luminance differs from a neighbour's by more than this fraction of "
+                      "their mean (turns adaptive refinement on; default 0.25 or the scene's settings.adaptive)");
+  CLI::Option* size = addNumberOption(command, "--min-element", options.minElementSize, kLength,
+                                      "refine no element into parts narrower than this, in scene units (turns "
+                                      "adaptive refinement on; default a quarter of the patch size)");
   command.add_flag("--no-adapt", options.off, "no adaptive refinement, whatever the scene says")->excludes(threshold)->excludes(size);
 }
 
 // The options of the solve that `render` and `export` both run first.
 void addSolveOptions(CLI::App* command, app::SolveOptions& solve) {
-  command->add_option("--patch-size", solve.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
-  command->add_option("--converge", solve.converge, "shoot until the unshot energy is below this fraction of the emitted (default 0.01)")
-      ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
-  command->add_option("--max-shots", solve.maxShots, "stop after this many shots even if not converged");
-  command->add_option("--threads", solve.threads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
-      ->check(CLI::Range(1, 64));
+  addNumberOption(*command, "--patch-size", solve.patchSize, kLength, "override the scene's initial patch size");
+  addNumberOption(*command, "--converge", solve.converge, app::positiveUpTo(1),
+                  "shoot until the unshot energy is below this fraction of the emitted (default 0.01)");
+  addNumberOption(*command, "--max-shots", solve.maxShots, app::inRange(0, 1e12), "stop after this many shots even if not converged");
+  addNumberOption(*command, "--threads", solve.threads, kThreads, "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)");
   command->add_flag("--quiet", solve.quiet, "no progress lines on stdout");
   addAdaptOptions(*command, solve.adapt);
   addModelOptions(command, solve.load);
@@ -56,12 +66,11 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--out", render.out, "tone-mapped 8-bit sRGB PNG");
   renderCommand->add_option("--linear", render.linear, "linear radiance, 3-channel float PFM");
   renderCommand->add_option("--camera", render.camera, "a camera of the scene (default: `default`)");
-  renderCommand->add_option("--width", render.width, "image width")->check(CLI::Range(1, 16384));
-  renderCommand->add_option("--height", render.height, "image height")->check(CLI::Range(1, 16384));
+  addNumberOption(*renderCommand, "--width", render.width, kImageSize, "image width");
+  addNumberOption(*renderCommand, "--height", render.height, kImageSize, "image height");
   renderCommand->add_flag("--wireframe", render.wireframe, "draw the mesh edges over the shading");
   renderCommand->add_option("--stats", render.stats, "write statistics as JSON");
-  renderCommand->add_option("--exposure", render.exposure, "radiance scale before sRGB (default: automatic)")
-      ->check(CLI::PositiveNumber);
+  addNumberOption(*renderCommand, "--exposure", render.exposure, kExposure, "radiance scale before sRGB (default: automatic)");
   addSolveOptions(renderCommand, render.solve);
   renderCommand->add_option("--move", render.moves, "after converging, move OBJECT by DX,DY,DZ and converge again (OBJECT:DX,DY,DZ; repeatable)")
       ->allow_extra_args(false);
@@ -70,26 +79,25 @@ int main(int argc, char** argv) {
   CLI::App* viewCommand = cli.add_subcommand("view", "open the walkthrough window (GLFW + Dear ImGui)");
   viewCommand->add_option("scene", view.scene, "scene file (.json) or glTF model (.gltf, .glb)")->required();
   addModelOptions(viewCommand, view.load);
-  viewCommand->add_option("--patch-size", view.patchSize, "override the scene's initial patch size")->check(CLI::PositiveNumber);
+  addNumberOption(*viewCommand, "--patch-size", view.patchSize, kLength, "override the scene's initial patch size");
   viewCommand->add_option("--camera", view.camera, "start at this camera (default: `default`)");
-  viewCommand->add_option("--width", view.width, "window width")->check(CLI::Range(64, 16384));
-  viewCommand->add_option("--height", view.height, "window height")->check(CLI::Range(64, 16384));
-  viewCommand->add_option("--frames", view.frames, "close after this many frames")->check(CLI::NonNegativeNumber);
+  addNumberOption(*viewCommand, "--width", view.width, kWindowSize, "window width");
+  addNumberOption(*viewCommand, "--height", view.height, kWindowSize, "window height");
+  addNumberOption(*viewCommand, "--frames", view.frames, app::inRange(0, 1e9), "close after this many frames");
   viewCommand->add_option("--screenshot", view.screenshot, "with --frames: save the last frame as PNG");
   viewCommand->add_flag("--wireframe", view.wireframe, "start with the mesh edges drawn");
-  viewCommand->add_option("--threads", view.lighting.solver.graphicsProcessors,
-                          "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)")
-      ->check(CLI::Range(1, 64));
+  addNumberOption(*viewCommand, "--threads", view.lighting.solver.graphicsProcessors, kThreads,
+                  "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)");
   addAdaptOptions(*viewCommand, view.adapt);
 
   app::MeshOptions mesh;
   CLI::App* meshCommand = cli.add_subcommand("mesh", "mesh a scene or a polygon case and print statistics");
   meshCommand->add_option("input", mesh.input, "scene file or polygon case (.json), or glTF model (.gltf, .glb)")->required();
   addModelOptions(meshCommand, mesh.load);
-  meshCommand->add_option("--patch-size", mesh.patchSize, "override the input's patch size")->check(CLI::PositiveNumber);
+  addNumberOption(*meshCommand, "--patch-size", mesh.patchSize, kLength, "override the input's patch size");
   meshCommand->add_option("--dump", mesh.dump, "write the mesh as JSON");
   meshCommand->add_option("--stats", mesh.stats, "write statistics as JSON");
-  meshCommand->add_option("--repeat", mesh.repeat, "mesh N times, report the best time")->check(CLI::Range(1, 100000));
+  addNumberOption(*meshCommand, "--repeat", mesh.repeat, app::inRange(1, 100000), "mesh N times, report the best time");
 
   app::CheckOptions check;
   CLI::App* checkCommand = cli.add_subcommand("check", "list what in a model will light badly, where, and what walkrad does about it");
@@ -101,8 +109,8 @@ int main(int argc, char** argv) {
   CLI::App* exportCommand = cli.add_subcommand("export", "mesh and solve a scene, write it as glTF with the light in its vertex colours");
   exportCommand->add_option("scene", exporting.scene, "scene file (.json) or glTF model (.gltf, .glb)")->required();
   exportCommand->add_option("--out", exporting.out, "the glTF file: .glb (binary) or .gltf (text)")->required();
-  exportCommand->add_option("--exposure", exporting.exposure, "radiance scale before clamping to COLOR_0 (default: automatic)")
-      ->check(CLI::PositiveNumber);
+  addNumberOption(*exportCommand, "--exposure", exporting.exposure, kExposure,
+                  "radiance scale before clamping to COLOR_0 (default: automatic)");
   addSolveOptions(exportCommand, exporting.solve);
 
   try {

@@ -45,6 +45,37 @@ walkrad_cli_test(view_bad_scene 2 ARGS view ${cli_dir}/bad_profile.json STDERR "
 walkrad_cli_test(nothing_to_write 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json STDERR "--out")
 walkrad_cli_test(unwritable_output 1 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/no/such/dir/x.png
                  STDERR "x.png: cannot create")
+# Every numeric option of every subcommand refuses NaN and infinities, in any spelling, and values
+# beyond its limits (for integers: negative, fractional, overflowing): exit 2, one line naming
+# the option. Each entry: SUBCOMMAND OPTION OUT-OF-RANGE-VALUE...; `check` takes no number.
+# cli.numbers_all_tried fails when `--help` lists a numeric option missing here.
+set(number_inputs_render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png)
+set(number_inputs_view ${PROJECT_SOURCE_DIR}/assets/cornell.json)
+set(number_inputs_mesh ${cli_dir}/wall_with_window.json)
+set(number_inputs_export ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.glb)
+set(numbers_tried)
+foreach(entry
+    "render --width 0 16385 99999999999999999999 1e3" "render --height -1 16385 1.5" "render --exposure 0 1e13 1e999"
+    "render --patch-size 0 -1 2e6" "render --converge 0 1.5" "render --max-shots -1 99999999999999999999 0x10"
+    "render --threads 0 65" "render --adapt-threshold 0 11" "render --min-element 0 2e6"
+    "view --patch-size 0" "view --width 63" "view --height 16385" "view --frames -1 2147483648" "view --threads 65"
+    "view --adapt-threshold -1" "view --min-element -1"
+    "mesh --patch-size 0 1e-400" "mesh --repeat 0 100001"
+    "export --exposure -1" "export --patch-size 1e7" "export --converge 2" "export --max-shots -1" "export --threads 0"
+    "export --adapt-threshold 10.5" "export --min-element 0")
+  separate_arguments(entry)
+  list(POP_FRONT entry command option)
+  list(APPEND numbers_tried "${command} ${option}")
+  string(JOIN "|" prefix $<TARGET_FILE:walkrad> ${command} ${number_inputs_${command}})
+  string(JOIN "|" values nan NaN inf INF -inf ${entry})
+  string(REPLACE "--" "" name ${option})
+  add_test(NAME cli.numbers.${command}.${name}
+           COMMAND ${CMAKE_COMMAND} "-DPREFIX=${prefix}" -DOPTION=${option} "-DVALUES=${values}" -P ${cli_dir}/refuses_values.cmake)
+endforeach()
+string(JOIN "|" numbers_tried ${numbers_tried})
+add_test(NAME cli.numbers_all_tried
+         COMMAND ${CMAKE_COMMAND} -DWALKRAD=$<TARGET_FILE:walkrad> "-DSUBCOMMANDS=render|view|mesh|check|export"
+                 "-DLISTED=${numbers_tried}" -P ${cli_dir}/numbers_listed.cmake)
 walkrad_cli_test(render_all_outputs 0
                  ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-cornell.png
                       --linear ${out}/cli-cornell.pfm --stats ${out}/cli-cornell.json --width 200 --height 150 --wireframe
