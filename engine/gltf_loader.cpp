@@ -25,7 +25,6 @@ namespace engine {
 namespace {
 
 constexpr double kMaxReflectance = 0.95;  // albedo 1 in a closed room never converges
-constexpr double kMaxPatchesPerEdge = 1e5;
 constexpr double kSkyLift = 0.01;         // the sky floats this fraction of the extent above the model
 
 // extras.KEY when it is three numbers, as walkrad's exporter writes a material's reflectance and
@@ -540,8 +539,7 @@ Scene importGltf(std::string_view bytes, const std::string& file, const LoadOpti
   scene.computeBounds();
   const double extent = sceneExtent(scene);
   scene.patchSize = sidecar.patchSize.value_or(extent / 8);
-  if (extent / scene.patchSize > kMaxPatchesPerEdge)
-    throw SceneError(Diag::PatchTooSmall, sidecarFile, "patch_size", "model extent " + std::to_string(extent));
+  checkPatchSize(scene.patchSize, extent, sidecarFile, "patch_size");
   for (Surface& s : scene.surfaces) s.patchSize = scene.patchSize;
   if (stage == GltfStage::Surfaces) cutOutContacts(scene.surfaces, contactTolerance(scene));
   return scene;

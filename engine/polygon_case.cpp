@@ -1,5 +1,7 @@
 #include "engine/polygon_case.h"
 
+#include "engine/scene_loader.h"
+
 #include <cmath>
 
 namespace engine {
@@ -33,6 +35,7 @@ PolygonCase parsePolygonCase(const Json& root, const JsonReader& in) {
   }
   result.polygon.outer = simpleRing(in.required(root, "", "outer"), "outer", in);
   const mesher::Ring2& outer = result.polygon.outer;
+  if (result.patchSize) checkPatchSize(*result.patchSize, mesher::extent(outer), in.file(), "patch_size");
   const double margin = 1e-9 * mesher::extent(outer);
   if (const auto holes = root.find("holes"); holes != root.end()) {
     in.expectArray(*holes, "holes");
@@ -51,6 +54,13 @@ PolygonCase parsePolygonCase(const Json& root, const JsonReader& in) {
     }
   }
   return result;
+}
+
+double casePatchSize(const PolygonCase& polygonCase, std::optional<double> override, const JsonReader& in) {
+  if (!override && !polygonCase.patchSize) in.fail(Diag::MissingField, "patch_size", "give it in the file or with --patch-size");
+  if (!override) return *polygonCase.patchSize;
+  checkPatchSize(*override, mesher::extent(polygonCase.polygon.outer), in.file(), "--patch-size");
+  return *override;
 }
 
 }  // namespace engine

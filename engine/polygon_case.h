@@ -19,8 +19,14 @@ struct PolygonCase {
 bool isPolygonCase(const Json& root);
 
 // Validates a polygon case: rings of 3 or more finite points without repeats, simple, with
-// area; holes strictly inside the outer ring and apart from each other. Throws SceneError with
+// area; holes strictly inside the outer ring and apart from each other; a patch size within
+// checkPatchSize's limit for the outer ring's extent. Throws SceneError with
 // the JSON path of the problem.
 PolygonCase parsePolygonCase(const Json& root, const JsonReader& in);
+
+// The patch size to mesh the case at: `override` (--patch-size) when given, else the file's.
+// Throws SceneError: MissingField without either, PatchTooSmall for an override too small for
+// the polygon (the file's own is checked by parsePolygonCase).
+double casePatchSize(const PolygonCase& polygonCase, std::optional<double> override, const JsonReader& in);
 
 }  // namespace engine

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,7 +27,6 @@ constexpr double kMinLength = 1e-9;   // shorter edges and sweeps are degenerate
 constexpr int kMaxSlices = 256;
 constexpr size_t kMaxPolygonPoints = 1024;  // per profile or hole
 constexpr size_t kMaxHolesPerFace = 256;    // the display's hole bridging is quadratic in points
-constexpr double kMaxPatchesPerEdge = 1e5;
 
 class SceneParser {
  public:
@@ -261,13 +261,11 @@ class SceneParser {
   Scene& scene_;
 };
 
-// A patch size so small that one edge of the scene would need more than kMaxPatchesPerEdge
-// patches is a typo (a size in metres in a scene in millimetres), not a wish.
-void checkPatchSizes(const Scene& scene, const JsonReader& in) {
+// Every patch size the file gives, against the scene's extent.
+void checkPatchSizes(const Scene& scene) {
   const double extent = sceneExtent(scene);
   auto check = [&](const std::optional<double>& patch, const std::string& path) {
-    if (patch && extent / *patch > kMaxPatchesPerEdge)
-      in.fail(Diag::PatchTooSmall, path, "scene extent " + std::to_string(extent));
+    if (patch) checkPatchSize(*patch, extent, scene.file, path);
   };
   check(scene.patchSize > 0 ? std::optional(scene.patchSize) : std::nullopt, "settings.patch_size");
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -307,7 +305,7 @@ Scene parseSceneFaces(std::string_view text, const std::string& file) {
   if (scene.patchSize <= 0) scene.patchSize = sceneExtent(scene) / 8;
   for (Surface& s : scene.surfaces)
     if (s.patchSize <= 0) s.patchSize = scene.patchSize;
-  checkPatchSizes(scene, in);
+  checkPatchSizes(scene);
   return scene;
 }
 
@@ -350,6 +348,17 @@ Scene loadSceneFaces(const std::string& path, const LoadOptions& options) {
 void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
   if (!options.units.empty()) throw SceneError(Diag::GltfOnly, path, "--units", "a scene file states its own units");
   if (!options.sidecar.empty()) throw SceneError(Diag::GltfOnly, path, "--sidecar");
+}
+
+void checkPatchSize(double patchSize, double extent, const std::string& file, const std::string& place) {
+  if (std::isnan(patchSize) || extent / patchSize > kMaxPatchesPerEdge)
+    throw SceneError(Diag::PatchTooSmall, file, place, "scene extent " + std::to_string(extent));
+}
+
+void overridePatchSize(Scene& scene, double patchSize) {
+  checkPatchSize(patchSize, sceneExtent(scene), scene.file, "--patch-size");
+  scene.patchSize = patchSize;
+  for (Surface& s : scene.surfaces) s.patchSize = patchSize;
 }
 
 double sceneExtent(const Scene& scene) {

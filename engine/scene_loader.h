@@ -12,6 +12,9 @@ namespace engine {
 // glTF models, sidecars).
 constexpr double kMaxLength = 1e6;    // any coordinate or size, in scene units
 constexpr double kMaxEmission = 1e6;  // radiance
+// A patch size that would put more patches than this along a scene's largest extent is a typo
+// (a size in metres in a scene in millimetres), not a wish.
+constexpr double kMaxPatchesPerEdge = 1e5;
 
 // What the command line may add to a model file.
 struct LoadOptions {
@@ -40,6 +43,15 @@ void preprocessSurfaces(Scene& scene);
 // Throws GltfOnly when `options` give units or a sidecar for a scene file, which states its own
 // units and needs no sidecar.
 void refuseGltfOptions(const std::string& path, const LoadOptions& options);
+
+// Throws SceneError (PatchTooSmall, naming `file` and `place`) when `patchSize` would put more
+// than kMaxPatchesPerEdge patches along `extent`. Every patch size a user gives passes here: a
+// scene file's, a sidecar's, a polygon case's and --patch-size.
+void checkPatchSize(double patchSize, double extent, const std::string& file, const std::string& place);
+
+// --patch-size: every surface of a loaded scene gets `patchSize`, refused as the file's own
+// would be (SceneError at place "--patch-size").
+void overridePatchSize(Scene& scene, double patchSize);
 
 // The largest side of the scene's bounding box (Scene::computeBounds), in scene units.
 double sceneExtent(const Scene& scene);

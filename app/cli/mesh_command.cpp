@@ -74,10 +74,9 @@ int runMesh(const MeshOptions& options) {
   OrderedJson imported;
   if (engine::isPolygonCase(root)) {
     const engine::PolygonCase polygonCase = engine::parsePolygonCase(root, in);
-    const std::optional<double> patch = options.patchSize ? options.patchSize : polygonCase.patchSize;
-    if (!patch) in.fail(engine::Diag::MissingField, "patch_size", "give it in the file or with --patch-size");
+    const double patch = engine::casePatchSize(polygonCase, options.patchSize, in);
     mesher::Mesh mesh;
-    meshMs = bestOf(options.repeat, [&] { mesh = mesher::meshPolygon(polygonCase.polygon, {*patch}); });
+    meshMs = bestOf(options.repeat, [&] { mesh = mesher::meshPolygon(polygonCase.polygon, {patch}); });
     tally.add(polygonCase.polygon, mesh);
     if (!options.dump.empty()) {
       dump["vertices"] = OrderedJson::array();
@@ -88,8 +87,7 @@ int runMesh(const MeshOptions& options) {
   } else {
     engine::Scene scene = gltf ? engine::loadScene(options.input, options.load) : engine::parseScene(text, options.input);
     imported = importStats(scene);
-    if (options.patchSize)
-      for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
+    if (options.patchSize) engine::overridePatchSize(scene, *options.patchSize);
     std::vector<engine::SurfaceMesh> meshes(scene.surfaces.size());
     meshMs = bestOf(options.repeat, [&] {
       mesher::Mesher mesher;

@@ -10,10 +10,9 @@ namespace app {
 
 engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs, const SolveOptions& options) {
   engine::Scene scene = engine::loadScene(path, options.load);
+  if (options.patchSize) engine::overridePatchSize(scene, *options.patchSize);
   for (const std::string& file : outputs)
     if (!file.empty()) checkCanWrite(file);
-  if (options.patchSize)
-    for (engine::Surface& s : scene.surfaces) s.patchSize = *options.patchSize;
   return scene;
 }
 

@@ -28,9 +28,9 @@ struct SolveOptions {
   engine::LoadOptions load;         // glTF: units and sidecar
 };
 
-// Loads the scene (SceneError for bad input), then checks that each non-empty `outputs` can be
-// written (std::runtime_error naming it): bad input is reported before an unwritable output,
-// and both before the long part. Applies the options' patch-size override.
+// Loads the scene and applies the options' patch-size override (SceneError for bad input), then
+// checks that each non-empty `outputs` can be written (std::runtime_error naming it): bad input
+// is reported before an unwritable output, and both before the long part.
 engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs, const SolveOptions& options);
 
 // The solver's settings for the options: their graphics processors, with overshooting (the

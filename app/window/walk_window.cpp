@@ -171,8 +171,7 @@ OpenedScene openScene(const std::string& path, const engine::LoadOptions& load, 
     opened.text = engine::readInputFile(path);
     opened.scene = engine::parseScene(opened.text, path);
   }
-  if (patchSize)
-    for (engine::Surface& s : opened.scene.surfaces) s.patchSize = *patchSize;
+  if (patchSize) engine::overridePatchSize(opened.scene, *patchSize);
   return opened;
 }
 

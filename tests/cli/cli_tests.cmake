@@ -103,6 +103,21 @@ walkrad_cli_test(mesh_hole_outside 2 ARGS mesh ${cli_dir}/hole_outside.json STDE
 walkrad_cli_test(mesh_no_patch_size 2 ARGS mesh ${cli_dir}/no_patch_size.json STDERR "no_patch_size.json: patch_size: missing required field")
 walkrad_cli_test(mesh_bad_repeat 2 ARGS mesh ${cli_dir}/wall_with_window.json --repeat 0 STDERR "^walkrad: .*repeat")
 
+# --patch-size goes through the scene file's limit (no more than 100,000 patches along the
+# extent) for scenes, glTF models and polygon cases, at once rather than after meshing for ever.
+walkrad_cli_test(render_tiny_patch_size 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/tiny.png --patch-size 1e-12
+                 STDERR "cornell.json: --patch-size: patch size too small for the scene" NO_FILE ${out}/tiny.png)
+walkrad_cli_test(view_tiny_patch_size 2 ARGS view ${PROJECT_SOURCE_DIR}/assets/cornell.json --patch-size 1e-12
+                 STDERR "cornell.json: --patch-size: patch size too small for the scene")
+walkrad_cli_test(mesh_tiny_patch_size 2 ARGS mesh ${PROJECT_SOURCE_DIR}/assets/kitchen.json --patch-size 1e-12
+                 STDERR "kitchen.json: --patch-size: patch size too small for the scene")
+walkrad_cli_test(export_gltf_tiny_patch_size 2 ARGS export ${cli_dir}/no_light.gltf --out ${out}/tiny.glb --patch-size 1e-12
+                 STDERR "no_light.gltf: --patch-size: patch size too small for the scene" NO_FILE ${out}/tiny.glb)
+walkrad_cli_test(mesh_polygon_tiny_patch_size 2 ARGS mesh ${cli_dir}/wall_with_window.json --patch-size 1e-12
+                 STDERR "wall_with_window.json: --patch-size: patch size too small for the scene")
+walkrad_cli_test(mesh_polygon_file_tiny_patch_size 2 ARGS mesh ${cli_dir}/tiny_patch_size.json
+                 STDERR "tiny_patch_size.json: patch_size: patch size too small for the scene")
+
 # --move: after converging, an object moves through the edit path and the light converges again.
 # Its statistics give each move's figures, as README lists them.
 walkrad_cli_test(render_move 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/cli-move.png

@@ -49,6 +49,25 @@ TEST(PolygonCase, BrokenCasesAreRefusedWithTheirPath) {
   expectRefused(R"({"outer": [[0, 0], [10, 0], [10, 10], [0, 10]], "shape": 1})", Diag::UnknownKey, "shape");
 }
 
+// The scene files' limit, 100,000 patches along the extent, holds for a case's own patch size and
+// for --patch-size alike.
+TEST(PolygonCase, PatchSizesTooSmallForThePolygonAreRefused) {
+  expectRefused(R"({"outer": [[0, 0], [10, 0], [10, 10]], "patch_size": 1e-5})", Diag::PatchTooSmall, "patch_size");
+  const JsonReader in("case.json");
+  const PolygonCase fine = parse(R"({"outer": [[0, 0], [10, 0], [10, 10]], "patch_size": 1e-4})");
+  EXPECT_EQ(casePatchSize(fine, std::nullopt, in), 1e-4);
+  EXPECT_EQ(casePatchSize(fine, 2.0, in), 2.0);
+  try {
+    casePatchSize(fine, 1e-12, in);
+    ADD_FAILURE() << "a patch size of 1e-12 accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.diag(), Diag::PatchTooSmall);
+    EXPECT_EQ(e.place(), "--patch-size");
+  }
+  const PolygonCase without = parse(R"({"outer": [[0, 0], [10, 0], [10, 10]]})");
+  EXPECT_THROW(casePatchSize(without, std::nullopt, in), SceneError);
+}
+
 TEST(PolygonCase, TellsCasesFromScenes) {
   const JsonReader in("x.json");
   EXPECT_TRUE(isPolygonCase(in.parse(R"({"outer": []})")));
