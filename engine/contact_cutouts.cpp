@@ -19,9 +19,19 @@ namespace {
 // the unit normal to 1e-6 and the plane offset to a grid of `cell` (neighbouring cells too).
 using PlaneKey = std::tuple<int64_t, int64_t, int64_t, int64_t>;
 
+// The cell of a plane offset, for any offset: beyond +-2^62 cells (an offset near the double's
+// limit, or a tolerance of 0) planes share an end cell, a neighbour's index still fits an
+// int64_t, and the exact test of cutOutContacts tells them apart. Not a number (infinite
+// offset over infinite cell, from coordinates near the limit) is cell 0.
+int64_t cellOf(double offset, double cell) {
+  constexpr double kEnd = 0x1p62;
+  const double index = std::floor(offset / cell);
+  return std::isnan(index) ? 0 : static_cast<int64_t>(std::clamp(index, -kEnd, kEnd));
+}
+
 PlaneKey planeKey(const Vec3& normal, double offset, double cell, int64_t shift = 0) {
   return {std::llround(normal.x * 1e6), std::llround(normal.y * 1e6), std::llround(normal.z * 1e6),
-          static_cast<int64_t>(std::floor(offset / cell)) + shift};
+          cellOf(offset, cell) + shift};
 }
 
 struct Box {

@@ -1,17 +1,27 @@
 #include "engine/scene_editor.h"
 
 #include "engine/contact_cutouts.h"
+#include "engine/scene_loader.h"
 #include "engine/solid_surfaces.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace engine {
 
 ObjectPose poseOf(const Object& object) { return {object.position, object.rotateYDeg}; }
+
+bool inSceneLimits(const ObjectPose& pose) {
+  const auto within = [](double x) { return std::abs(x) <= kMaxLength; };  // false for NaN
+  return within(pose.position.x) && within(pose.position.y) && within(pose.position.z) && within(pose.rotateYDeg);
+}
+
+Vec3 clampToSceneLimits(const Vec3& position) { return glm::clamp(position, Vec3(-kMaxLength), Vec3(kMaxLength)); }
 
 SceneEditor::SceneEditor(Scene scene, MeshedScene meshed)
     : scene_(std::move(scene)), meshed_(std::move(meshed)), surfacesOf_(scene_.objects.size()) {
@@ -38,6 +48,7 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   if (object >= scene_.objects.size()) throw std::invalid_argument("no object " + std::to_string(object));
   Object& o = scene_.objects[object];
   if (!o.movable) throw std::invalid_argument("object \"" + o.name + "\" is not movable");
+  if (!inSceneLimits(pose)) throw std::invalid_argument("object \"" + o.name + "\" would stand beyond the scene limits");
   if (poseOf(o) == pose) return false;
   o.position = pose.position;
   o.rotateYDeg = pose.rotateYDeg;

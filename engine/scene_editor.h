@@ -25,6 +25,12 @@ struct ObjectPose {
 };
 ObjectPose poseOf(const Object& object);
 
+// Whether a scene file can hold `pose`: its `position` and `rotate_y` finite and within
+// kMaxLength, as the loader checks them, so that a scene saved after moves loads again.
+bool inSceneLimits(const ObjectPose& pose);
+// The position nearest a finite `position` that is within those limits (each coordinate clamped).
+Vec3 clampToSceneLimits(const Vec3& position);
+
 class SceneEditor {
  public:
   SceneEditor(Scene scene, MeshedScene meshed);
@@ -37,7 +43,7 @@ class SceneEditor {
 
   // Puts `object` at `pose`, surfaces, meshes, cut-outs and scene bounds with it; returns
   // whether anything moved. Throws std::invalid_argument for an object that does not exist or is
-  // not movable.
+  // not movable, or a pose beyond the scene limits (inSceneLimits).
   bool setPose(uint32_t object, const ObjectPose& pose);
   // The surfaces the last setPose meshed again (their element counts may differ); the object's
   // other surfaces kept their meshes.

@@ -18,6 +18,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace app {
 
@@ -31,31 +32,43 @@ double millisecondsSince(Clock::time_point start) {
 
 struct Move {
   uint32_t object = 0;
-  engine::Vec3 offset{0};
+  engine::Vec3 position{0};  // where the move puts it
 };
 
+// "puts NAME at (X, Y, Z), beyond the scene limits (1e+06 on each axis)".
+std::string beyondLimits(const std::string& name, const engine::Vec3& p) {
+  std::ostringstream text;
+  text << "puts \"" << name << "\" at (" << p.x << ", " << p.y << ", " << p.z << "), beyond the scene limits ("
+       << engine::kMaxLength << " on each axis)";
+  return text.str();
+}
+
 // OBJECT:DX,DY,DZ (the name may hold colons: the offset follows the last one) for a movable
-// object of the scene. Throws std::invalid_argument with a one-line message naming the option.
-Move parseMove(const std::string& text, const engine::SceneEditor& editor) {
+// object of the scene, from where `positions` (per object) say earlier moves left it, to within
+// the scene limits. Throws std::invalid_argument with a one-line message naming the option.
+Move parseMove(const std::string& text, const engine::SceneEditor& editor, std::vector<engine::Vec3>& positions) {
   const auto fail = [&](const std::string& why) { throw std::invalid_argument("--move \"" + text + "\": " + why); };
   const size_t colon = text.rfind(':');
   if (colon == std::string::npos) fail("expected OBJECT:DX,DY,DZ");
-  Move move;
   const std::string name = text.substr(0, colon);
   const auto object = editor.findObject(name);
   if (!object) fail("the scene has no object \"" + name + "\"");
   if (!editor.scene().objects[*object].movable) fail("\"" + name + "\" is not movable");
-  move.object = *object;
+  engine::Vec3 offset{0};
   const char* at = text.data() + colon + 1;
   const char* end = text.data() + text.size();
   for (int k = 0; k < 3; ++k) {
-    const auto [next, error] = std::from_chars(at, end, move.offset[k]);
-    if (error != std::errc() || !std::isfinite(move.offset[k])) fail("expected three numbers DX,DY,DZ");
+    const auto [next, error] = std::from_chars(at, end, offset[k]);
+    if (error != std::errc() || !std::isfinite(offset[k])) fail("expected three numbers DX,DY,DZ");
     at = next;
     if (k < 2 && (at == end || *at++ != ',')) fail("expected three numbers DX,DY,DZ");
   }
   if (at != end) fail("expected three numbers DX,DY,DZ");
-  return move;
+  engine::ObjectPose pose = engine::poseOf(editor.scene().objects[*object]);
+  pose.position = positions[*object] + offset;
+  if (!engine::inSceneLimits(pose)) fail(beyondLimits(name, pose.position));
+  positions[*object] = pose.position;
+  return {*object, pose.position};
 }
 
 }  // namespace
@@ -86,7 +99,9 @@ int runRender(const RenderOptions& options) {
   const double meshMs = millisecondsSince(start);
   std::vector<Move> moves;
   try {
-    for (const std::string& text : options.moves) moves.push_back(parseMove(text, editor));
+    std::vector<engine::Vec3> positions;
+    for (const engine::Object& o : editor.scene().objects) positions.push_back(o.position);
+    for (const std::string& text : options.moves) moves.push_back(parseMove(text, editor, positions));
   } catch (const std::invalid_argument& e) {
     std::cerr << "walkrad render: " << e.what() << "\n";
     return 2;
@@ -112,7 +127,7 @@ int runRender(const RenderOptions& options) {
     const Move& move = moves[i];
     start = Clock::now();
     engine::ObjectPose pose = engine::poseOf(editor.scene().objects[move.object]);
-    pose.position += move.offset;
+    pose.position = move.position;
     editor.setPose(move.object, pose);
     std::vector<radiosity::Surface> input;
     if (adaptation) {

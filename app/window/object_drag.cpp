@@ -34,17 +34,28 @@ bool ObjectDrag::follow(const Ray& ray) {
   const double t = (grab_.y + lifted_ - ray.origin.y) / ray.direction.y;
   if (!(t > 0)) return false;
   const glm::dvec3 on = ray.origin + t * ray.direction;
+  if (!std::isfinite(on.x) || !std::isfinite(on.z)) return false;  // a ray a hair from the horizon
   slid_ = {on.x - grab_.x, 0, on.z - grab_.z};
-  engine::ObjectPose pose = engine::poseOf(editor_.scene().objects[*selected_]);
-  pose.position = start_.position + slid_ + glm::dvec3{0, lifted_, 0};
-  return editor_.setPose(*selected_, pose);
+  return moveGrabbed();
 }
 
 bool ObjectDrag::lift(double dy) {
-  if (!dragging_) return false;
+  if (!dragging_ || !std::isfinite(dy)) return false;
   lifted_ += dy;
+  return moveGrabbed();
+}
+
+bool ObjectDrag::moveGrabbed() {
+  const glm::dvec3 wanted = start_.position + slid_ + glm::dvec3{0, lifted_, 0};
+  const glm::dvec3 position = engine::clampToSceneLimits(wanted);
+  // Held at the scene limits, the slide and lift keep only what was reached, so the way back
+  // starts with the first step.
+  if (position != wanted) {
+    slid_ = {position.x - start_.position.x, 0, position.z - start_.position.z};
+    lifted_ = position.y - start_.position.y;
+  }
   engine::ObjectPose pose = engine::poseOf(editor_.scene().objects[*selected_]);
-  pose.position = start_.position + slid_ + glm::dvec3{0, lifted_, 0};
+  pose.position = position;
   return editor_.setPose(*selected_, pose);
 }
 

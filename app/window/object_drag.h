@@ -29,9 +29,11 @@ class ObjectDrag {
   // movable, grabs it. Returns whether a drag started.
   bool press(const Ray& ray);
   // The mouse moved with the button held: the grabbed object follows the ray's crossing with
-  // its resting plane (not when the ray runs above the horizon). Returns whether it moved.
+  // its resting plane (not when the ray runs above the horizon), up to the scene limits
+  // (engine::inSceneLimits). Returns whether it moved.
   bool follow(const Ray& ray);
-  // Raises the grabbed object by `dy` (scene units; negative lowers it). Returns whether it moved.
+  // Raises the grabbed object by `dy` (scene units; negative lowers it), up to the scene limits.
+  // Returns whether it moved.
   bool lift(double dy);
   // The button came up: the drag's edit, when the object moved.
   std::optional<engine::PoseEdit> release();
@@ -41,6 +43,9 @@ class ObjectDrag {
   std::optional<engine::PoseEdit> turn(double degrees);
 
  private:
+  // Puts the grabbed object where the drag's slide and lift take it, within the scene limits.
+  bool moveGrabbed();
+
   engine::SceneEditor& editor_;
   std::optional<uint32_t> selected_;
   bool dragging_ = false;

@@ -3,6 +3,7 @@
 #include "app/image/atomic_file.h"
 #include "engine/gltf_loader.h"
 #include "engine/meshed_scene.h"
+#include "engine/scene_loader.h"
 #include "engine/scene_saver.h"
 
 #include <exception>
@@ -43,6 +44,9 @@ std::string SceneEdits::save() {
   if (engine::isGltfPath(path_)) return "not saved: " + path_ + " is a glTF model; walkrad saves poses only into scene files (.json)";
   try {
     const std::string text = engine::sceneTextWithPoses(text_, editor_.scene());
+    // A file that would not load again is not written; the loader's error says why (an object
+    // moved so far off that the scene's patch size is too small for its extent).
+    engine::parseScene(text, path_);
     writeFileAtomically(path_, text);
     text_ = text;
     history_.markSaved();

@@ -30,7 +30,7 @@ class SceneEdits {
 
   // Writes the poses into the scene's file (temporary file, then rename). Returns a one-line
   // report: where it was saved, or why not (the file is then as it was). A glTF model is never
-  // written: the report says so.
+  // written, nor a text the loader would refuse: the report says so.
   std::string save();
 
  private:

@@ -55,6 +55,26 @@ TEST(ObjectDrag, ADragSlidesTheBoxOnTheFloorAndRecordsOneEdit) {
   EXPECT_FALSE(drag.dragging());
 }
 
+// Dragged toward the horizon or lifted by a wild wheel, the box stops at the scene limits (a
+// scene file holds no position beyond 1e6) and comes back with the first step the other way.
+TEST(ObjectDrag, ADragStopsAtTheSceneLimits) {
+  SceneEdits edits = editsOf();
+  ObjectDrag& drag = edits.drag();
+  ASSERT_TRUE(drag.press(down(1.5, 1.5)));
+  const engine::Object& box = edits.editor().scene().objects[*drag.selected()];
+  EXPECT_TRUE(drag.follow({{2.5, 2, 1.5}, glm::normalize(glm::dvec3{1, -1e-9, 0})}));  // crosses y = 1 at x = 1e9
+  EXPECT_EQ(box.position.x, engine::kMaxLength);
+  EXPECT_FALSE(drag.follow({{2.5, 2, 1.5}, {1, -1e-320, 0}}));  // crosses at infinity: stays
+  EXPECT_EQ(box.position.x, engine::kMaxLength);
+  EXPECT_TRUE(drag.lift(1e300));
+  EXPECT_EQ(box.position.y, engine::kMaxLength);
+  EXPECT_TRUE(drag.lift(-0.5));
+  EXPECT_EQ(box.position.y, engine::kMaxLength - 0.5);
+  const auto edit = drag.release();
+  ASSERT_TRUE(edit);
+  EXPECT_TRUE(engine::inSceneLimits(edit->after));
+}
+
 TEST(ObjectDrag, FixedObjectsAreSelectedButNotDragged) {
   SceneEdits edits = editsOf();
   ObjectDrag& drag = edits.drag();
@@ -110,6 +130,24 @@ TEST(SceneEdits, SavingWritesThePosesAndAFailedSaveLosesNothing) {
   EXPECT_TRUE(edits.history().unsaved());
   EXPECT_EQ(engine::loadScene(path).objects[1].position.y, 0.25);
   std::filesystem::remove_all(folder);
+}
+
+// The box 1e6 m off a 4 m room whose patch size is 0.5 m makes a scene the loader refuses (over
+// 100,000 patches along its extent): that is not saved, and the file stays as it was.
+TEST(SceneEdits, ASceneThatWouldNotLoadAgainIsNotSaved) {
+  const std::filesystem::path folder = std::filesystem::path(WALKRAD_TEST_OUTPUT) / "unloadable_save";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::string path = (folder / "scene.json").string();
+  std::ofstream(path) << kScene;
+  SceneEdits edits = editsOf(path);
+  ObjectDrag& drag = edits.drag();
+  drag.press(down(1.5, 1.5));
+  drag.follow({{2.5, 2, 1.5}, glm::normalize(glm::dvec3{1, -1e-9, 0})});
+  edits.record(*drag.release());
+  const std::string report = edits.save();
+  EXPECT_EQ(report.rfind("not saved: " + path + ": settings.patch_size: patch size too small", 0), 0u) << report;
+  EXPECT_EQ(engine::readInputFile(path), kScene);
 }
 
 // A glTF model's objects move, but the model is not rewritten: the save says so and the file

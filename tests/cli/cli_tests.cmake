@@ -135,6 +135,18 @@ walkrad_cli_test(render_move_two_numbers 2 ARGS render ${PROJECT_SOURCE_DIR}/ass
                  --move "tall block:1,0" STDERR "expected three numbers")
 walkrad_cli_test(render_move_not_a_number 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
                  --move "tall block:1,x,0" STDERR "expected three numbers")
+# --move keeps the object within the scene limits (coordinates within 1e6, as scene files): not a
+# number, beyond the limits, or there after the moves before it, it is exit 2 naming the option.
+foreach(offset nan inf -inf NaN 1e7 1e308 -1e308 1e999)
+  walkrad_cli_test(render_move_refused_${offset} 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                   --move "short block:0,${offset},0" STDERR "^walkrad render: --move \"short block:0,${offset},0\": ")
+endforeach()
+walkrad_cli_test(render_move_beyond_limits 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --move "short block:1e7,0,0"
+                 STDERR "--move \"short block:1e7,0,0\": puts \"short block\" at \\(1e\\+07, 0, 0\\), beyond the scene limits")
+walkrad_cli_test(render_moves_add_up_beyond_limits 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
+                 --move "short block:6e5,0,0" --move "tall block:6e5,0,0" --move "short block:6e5,0,0"
+                 STDERR "--move \"short block:6e5,0,0\": puts \"short block\" at \\(1.2e\\+06, 0, 0\\)")
 # Adaptive refinement: on with its flags (the stats count its passes), a bad value or both on
 # and off is exit 2 naming the option.
 walkrad_cli_test(render_adaptive 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/box-on-floor.json --out ${out}/cli-adaptive.png

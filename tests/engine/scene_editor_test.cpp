@@ -2,11 +2,13 @@
 #include "engine/edit_history.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_editor.h"
+#include "engine/scene_loader.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 namespace engine {
@@ -105,6 +107,22 @@ TEST(SceneEditor, FixedObjectsAndUnknownOnesRefuseToMove) {
   EXPECT_THROW(editor.setPose(7, {Vec3{1, 0, 0}, 0}), std::invalid_argument);
   EXPECT_FALSE(editor.findObject("nothing"));
   EXPECT_FALSE(editor.setPose(*editor.findObject("box"), {Vec3{0}, 0}));  // where it stands
+}
+
+// A scene file holds positions and turns within 1e6 (the loader refuses others), so no edit goes
+// beyond: a scene saved after moves loads again.
+TEST(SceneEditor, PosesBeyondTheSceneLimitsAreRefused) {
+  SceneEditor editor = editorOf(test::baseScene());
+  const uint32_t box = *editor.findObject("box");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const ObjectPose& pose : {ObjectPose{Vec3{1e7, 0, 0}, 0}, ObjectPose{Vec3{0, -1e308, 0}, 0},
+                                 ObjectPose{Vec3{0, 0, nan}, 0}, ObjectPose{Vec3{0}, 2e6}, ObjectPose{Vec3{0}, nan}}) {
+    EXPECT_FALSE(inSceneLimits(pose));
+    EXPECT_THROW(editor.setPose(box, pose), std::invalid_argument);
+    EXPECT_EQ(editor.scene().objects[box].position, Vec3{0});
+  }
+  EXPECT_TRUE(editor.setPose(box, {Vec3{kMaxLength, -kMaxLength, 0}, -kMaxLength}));
+  EXPECT_EQ(clampToSceneLimits(Vec3{2e6, -1e308, 5}), (Vec3{kMaxLength, -kMaxLength, 5}));
 }
 
 TEST(SceneEditor, BoundsFollowAnObjectLeavingTheRoom) {
