@@ -1,23 +1,31 @@
 #include "app/image/atomic_file.h"
 
+#include "app/image/temporary_file.h"
+
 #include <cerrno>
 #include <climits>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
+#include <optional>
 #include <stdexcept>
 #include <sys/stat.h>
+#include <system_error>
 #include <unistd.h>
 
 namespace app {
 
 namespace {
 
-// Writes all the bytes and flushes them (to the disk too, with `sync`); false on any failure,
-// errno telling why.
-bool writeAll(std::FILE* file, std::string_view bytes, bool sync) {
-  return std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size() && std::fflush(file) == 0 &&
-         (!sync || ::fsync(::fileno(file)) == 0);
+// Writes all the bytes; false on failure, errno telling why.
+bool writeAll(int file, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t written = ::write(file, bytes.data(), bytes.size());
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) return false;
+    bytes.remove_prefix(static_cast<size_t>(written));
+  }
+  return true;
 }
 
 // A device or pipe (`--out /dev/stdout`) is written in place: renaming over it would replace
@@ -28,11 +36,17 @@ bool isDeviceOrPipe(const std::string& path) {
 }
 
 void writeInPlace(const std::string& path, std::string_view bytes) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
-  const bool written = writeAll(file, bytes, false);
+  const int file = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (file < 0) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
+  const bool written = writeAll(file, bytes);
   const std::string reason = std::strerror(errno);
-  if (std::fclose(file) != 0 || !written) throw std::runtime_error(path + ": cannot write: " + reason);
+  if (::close(file) != 0 || !written) throw std::runtime_error(path + ": cannot write: " + reason);
+}
+
+// A file replaced keeps its permissions; a new one has those of any new file (the umask's).
+bool keepMode(int file, const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) || ::fchmod(file, info.st_mode & 07777) == 0;
 }
 
 // Where the bytes for `given` go: a symbolic link stays one, its target (there yet or not) is
@@ -58,22 +72,30 @@ std::string folderOf(const std::string& path) {
   return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
 }
 
+std::string fileNameOf(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+
 }  // namespace
 
 void writeFileAtomically(const std::string& given, std::string_view bytes) {
   if (isDeviceOrPipe(given)) return writeInPlace(given, bytes);
   const std::string path = writtenPath(given);
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-  auto fail = [&](const char* what) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot " + what + ": " + reason);
+  const auto cannot = [&](const char* what, int error) {
+    throw std::runtime_error(path + ": cannot " + what + ": " + std::strerror(error));
   };
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (!file) fail("create");
-  const bool written = writeAll(file, bytes, true);
-  if (std::fclose(file) != 0 || !written) fail("write");
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail("rename into place");
+  // On any failure the temporary file goes with `file`.
+  std::optional<TemporaryFile> file;
+  try {
+    file.emplace(folderOf(path), fileNameOf(path));
+  } catch (const std::system_error& e) {
+    cannot("create", e.code().value());
+  }
+  if (!writeAll(file->descriptor(), bytes) || !keepMode(file->descriptor(), path) || ::fsync(file->descriptor()) != 0)
+    cannot("write", errno);
+  try {
+    file->replace(fileNameOf(path));
+  } catch (const std::system_error& e) {
+    cannot("rename into place", e.code().value());
+  }
 }
 
 void checkCanWrite(const std::string& given) {

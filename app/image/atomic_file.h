@@ -1,5 +1,7 @@
 // Writing a file so that it is replaced whole or not at all: write a temporary file in the same
-// folder, flush it, then rename it over the target.
+// folder (temporary_file.h: created exclusively, never through a symbolic link, and nameless
+// until written, so a process killed meanwhile leaves nothing), flush it, then rename it over
+// the target. The one writer of every file walkrad writes.
 #pragma once
 
 #include <string>
@@ -8,8 +10,10 @@
 namespace app {
 
 // Throws std::runtime_error naming `path` when the file cannot be written; the old file, if
-// any, is then untouched and no temporary file is left behind. A symbolic link's target is
-// replaced (the link stays); a device or pipe is written in place, since it cannot be replaced.
+// any, is then untouched and no temporary file is left behind. A new file has the permissions
+// of any new file (0666 less the umask), a replaced one keeps its own. A symbolic link's target
+// is replaced (the link stays); a device or pipe is written in place, since it cannot be
+// replaced.
 void writeFileAtomically(const std::string& path, std::string_view bytes);
 
 // Throws as writeFileAtomically would when `path` cannot become a file: its folder (a symbolic

@@ -3,14 +3,13 @@
 #include "app/window/object_drag.h"
 #include "app/window/scene_edits.h"
 #include "engine/scene_loader.h"
+#include "tests/app/file_size_limit.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
-
-#include <unistd.h>
 
 namespace app {
 namespace {
@@ -120,13 +119,15 @@ TEST(SceneEdits, SavingWritesThePosesAndAFailedSaveLosesNothing) {
   EXPECT_FALSE(edits.history().unsaved());
   EXPECT_EQ(engine::loadScene(path).objects[1].position.y, 0.25);
 
-  // The temporary file cannot be made (a folder stands where it would go; even root cannot open
-  // that as a file): the save fails with a report and the scene's file stays as it was.
+  // The file cannot be written in full (as on a full disk): the save fails with a report and the
+  // scene's file stays as it was.
   edits.undo();
-  const std::filesystem::path blocker = path + ".tmp." + std::to_string(::getpid());
-  std::filesystem::create_directory(blocker);
-  const std::string report = edits.save();
-  EXPECT_EQ(report.rfind("not saved: ", 0), 0u) << report;
+  std::string report;
+  {
+    const test::FileSizeLimit full(100);
+    report = edits.save();
+  }
+  EXPECT_EQ(report.rfind("not saved: " + path + ": cannot write: File too large", 0), 0u) << report;
   EXPECT_TRUE(edits.history().unsaved());
   EXPECT_EQ(engine::loadScene(path).objects[1].position.y, 0.25);
   std::filesystem::remove_all(folder);
