@@ -103,12 +103,18 @@ TEST(ObjectDrag, TurnsUndoAndRedo) {
   EXPECT_FALSE(edits.redo());
 }
 
-TEST(SceneEdits, SavingWritesThePosesAndAFailedSaveLosesNothing) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "walkrad_scene_edits_test";
+// kScene written as scene.json in a fresh folder `name` of the test output; its path.
+std::string sceneFileIn(const std::string& name) {
+  const std::filesystem::path folder = std::filesystem::path(WALKRAD_TEST_OUTPUT) / name;
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   const std::string path = (folder / "scene.json").string();
   std::ofstream(path) << kScene;
+  return path;
+}
+
+TEST(SceneEdits, SavingWritesThePosesAndAFailedSaveLosesNothing) {
+  const std::string path = sceneFileIn("scene_edits_save");
   SceneEdits edits = editsOf(path);
   ObjectDrag& drag = edits.drag();
   drag.press(down(1.5, 1.5));
@@ -130,17 +136,12 @@ TEST(SceneEdits, SavingWritesThePosesAndAFailedSaveLosesNothing) {
   EXPECT_EQ(report.rfind("not saved: " + path + ": cannot write: File too large", 0), 0u) << report;
   EXPECT_TRUE(edits.history().unsaved());
   EXPECT_EQ(engine::loadScene(path).objects[1].position.y, 0.25);
-  std::filesystem::remove_all(folder);
 }
 
 // The box 1e6 m off a 4 m room whose patch size is 0.5 m makes a scene the loader refuses (over
 // 100,000 patches along its extent): that is not saved, and the file stays as it was.
 TEST(SceneEdits, ASceneThatWouldNotLoadAgainIsNotSaved) {
-  const std::filesystem::path folder = std::filesystem::path(WALKRAD_TEST_OUTPUT) / "unloadable_save";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
-  const std::string path = (folder / "scene.json").string();
-  std::ofstream(path) << kScene;
+  const std::string path = sceneFileIn("scene_edits_unloadable");
   SceneEdits edits = editsOf(path);
   ObjectDrag& drag = edits.drag();
   drag.press(down(1.5, 1.5));
