@@ -4,6 +4,7 @@
 #include "engine/contact_cutouts.h"
 #include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
+#include "engine/gltf_files.h"
 #include "engine/gltf_sidecar.h"
 #include "engine/json_reader.h"
 
@@ -457,9 +458,11 @@ void addSky(Scene& scene, const Vec3& emission, const Vec3& lo, const Vec3& hi) 
   scene.surfaces.push_back(std::move(s));
 }
 
+// The first line of tinygltf's message, cut short (it may quote a whole data: URI).
 std::string firstLine(const std::string& text) {
-  const size_t end = text.find('\n');
-  return end == std::string::npos ? text : text.substr(0, end);
+  constexpr size_t kLongest = 200;
+  const std::string line = text.substr(0, text.find('\n'));
+  return line.size() <= kLongest ? line : line.substr(0, kLongest) + "...";
 }
 
 
@@ -494,15 +497,17 @@ Scene importGltf(std::string_view bytes, const std::string& file, const LoadOpti
   if (sidecarFile.empty() && std::filesystem::exists(sidecarPathFor(file))) sidecarFile = sidecarPathFor(file);
   if (!sidecarFile.empty()) sidecar = parseGltfSidecar(readInputFile(sidecarFile), sidecarFile);
 
+  // The files the model names, confined to its folder (gltf_files.h); tinygltf reads no other.
+  GltfFiles files(bytes, file);
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(files.callbacks());
   tinygltf::Model model;
   std::string error, warning;
-  const std::string directory = std::filesystem::path(file).parent_path().string();
   const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
   const bool read = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                         static_cast<unsigned int>(bytes.size()), directory)
+                                                         static_cast<unsigned int>(bytes.size()), "")
                            : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
-                                                        static_cast<unsigned int>(bytes.size()), directory);
+                                                        static_cast<unsigned int>(bytes.size()), "");
   if (!read) throw SceneError(Diag::NotGltf, file, "", error.empty() ? "tinygltf gave no reason" : firstLine(error));
 
   Scene scene;

@@ -236,13 +236,15 @@ TEST(SceneErrorsText, EveryTruncationIsRefused) {
 }
 
 TEST(SceneErrorsText, MissingFileAndDirectoryAreUnreadable) {
-  for (const std::string& path : {std::string("/nonexistent/scene.json"), std::string(WALKRAD_TEST_OUTPUT)}) {
+  const std::pair<std::string, Diag> cases[] = {{"/nonexistent/scene.json", Diag::FileUnreadable},
+                                                {WALKRAD_TEST_OUTPUT, Diag::NotRegularFile}};
+  for (const auto& [path, diag] : cases) {
     try {
       loadScene(path);
       FAIL() << path;
     } catch (const SceneError& e) {
-      EXPECT_EQ(e.diag(), Diag::FileUnreadable);
-      EXPECT_EQ(std::string(e.what()).rfind(path + ": cannot read the file", 0), 0u) << e.what();
+      EXPECT_EQ(e.diag(), diag);
+      EXPECT_EQ(std::string(e.what()).rfind(path + ": " + describe(diag), 0), 0u) << e.what();
     }
   }
 }
@@ -250,9 +252,11 @@ TEST(SceneErrorsText, MissingFileAndDirectoryAreUnreadable) {
 // A test per way of breaking a scene: every diagnostic of the table is produced above.
 TEST(SceneErrorsText, EveryDiagnosticHasACase) {
   std::set<Diag> covered{Diag::NotJson, Diag::FileUnreadable, Diag::DuplicateKey};  // the tests below
+  // Files that are no regular file or too large: input_file_test.cpp.
+  covered.insert({Diag::NotRegularFile, Diag::FileTooLarge});
   // glTF models' own: gltf_errors_test.cpp has a case for each.
   covered.insert({Diag::NotGltf, Diag::BadGltfReference, Diag::BadAccessor, Diag::NodeLoop, Diag::NoTriangles,
-                  Diag::UnknownNode, Diag::GltfOnly});
+                  Diag::UnknownNode, Diag::GltfOnly, Diag::UriAbsolute, Diag::UriOutsideFolder, Diag::WrongByteLength});
   for (const ErrorCase& c : kCases) covered.insert(c.diag);
 #define WALKRAD_EXPECT_COVERED(id, text) EXPECT_TRUE(covered.count(Diag::id)) << #id " has no test";
   WALKRAD_SCENE_DIAGNOSTICS(WALKRAD_EXPECT_COVERED)
