@@ -126,6 +126,44 @@ TEST(GltfErrors, ATruncatedExternalBufferIsRefused) {
   EXPECT_EQ(what.rfind(path + ": buffers[0].uri: ", 0), 0u) << what;
 }
 
+// Hostile models the loader survives quickly, in work linear in the file: 40,000 materials of
+// one name (named apart in one pass each), a chain of 20,000 nested nodes (walked without
+// recursion, its transforms composed all the way down).
+TEST(GltfErrors, FortyThousandMaterialsOfOneNameLoad) {
+  GltfModel m = smallModel();
+  m.materials.assign(40000, {"paint", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0, ""});
+  m.materials.push_back({"paint 2", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0, ""});
+  const Scene scene = parseGltf(test::gltfText(m), "paint.gltf");
+  ASSERT_EQ(scene.materials.size(), 40001u);
+  EXPECT_EQ(scene.materials[0].name, "paint");
+  EXPECT_EQ(scene.materials[1].name, "paint 2");
+  EXPECT_EQ(scene.materials[39999].name, "paint 40000");
+  EXPECT_EQ(scene.materials[40000].name, "paint 2 2");
+}
+
+TEST(GltfErrors, AChainOfTwentyThousandNodesLoads) {
+  constexpr int kDepth = 20000;
+  GltfModel m = smallModel();
+  m.nodes.resize(kDepth);
+  for (int i = 0; i < kDepth; ++i) {
+    test::GltfNode& node = m.nodes[static_cast<size_t>(i)];
+    node = {"link " + std::to_string(i), {}, {}, {0.001, 0, 0}, {}, {}, {}, -1};
+    if (i + 1 < kDepth) node.children = {i + 1};
+  }
+  m.nodes.back().primitives = smallModel().nodes[0].primitives;
+  m.roots = {0};
+  m.cameras.clear();
+  const Scene scene = parseGltf(test::gltfText(m), "chain.gltf");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.objects[0].name, "link 0");
+  EXPECT_NEAR(scene.boundsMin.x, kDepth * 0.001, 1e-6);
+  EXPECT_NEAR(scene.boundsMax.x, kDepth * 0.001 + 1, 1e-6);
+  m.nodes.back().children = {kDepth / 2};  // and the chain's end loops back to its middle
+  std::string what;
+  EXPECT_EQ(test::refusalOf([&] { parseGltf(test::gltfText(m), "loop.gltf"); }, &what), Diag::NodeLoop);
+  EXPECT_EQ(what, "loop.gltf: nodes[" + std::to_string(kDepth / 2) + "]: " + describe(Diag::NodeLoop));
+}
+
 TEST(GltfErrors, SidecarNamesAreChecked) {
   const std::string model = writeFile("sidecar-names.gltf", test::gltfText(smallModel()));
   std::string what;
