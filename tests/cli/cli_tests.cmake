@@ -171,3 +171,8 @@ walkrad_cli_test(gltf_data_uri_length 2 ARGS mesh ${cli_dir}/data_uri_length.glt
                  STDERR "data_uri_length.gltf: buffers\\[0\\]\\.uri: glTF buffer's data is not byteLength bytes long: \"data:application/octet-stream;base64,[^\"]*\": decodes to 60 bytes, byteLength says 64$")
 # Input files are regular files: a device is refused unread (/dev/zero never ends).
 walkrad_cli_test(mesh_device_input 2 ARGS mesh /dev/zero STDERR "^/dev/zero: not a regular file: a device$")
+# A number too large for a double is placed by line and column, in scenes and polygon cases.
+walkrad_cli_test(huge_number 2 ARGS render ${cli_dir}/huge_number.json --out ${out}/huge.png
+                 STDERR "huge_number.json:3:31: not a finite number: 1e999 is too large for a double$" NO_FILE ${out}/huge.png)
+walkrad_cli_test(mesh_huge_number 2 ARGS mesh ${cli_dir}/huge_polygon.json
+                 STDERR "huge_polygon.json:2:22: not a finite number: 1e400 is too large for a double$")

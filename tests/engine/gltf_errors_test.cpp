@@ -3,6 +3,7 @@
 #include "engine/gltf_loader.h"
 
 #include "engine/diagnostics.h"
+#include "engine/gltf_sidecar.h"
 #include "tests/engine/gltf_writer.h"
 #include "tests/engine/hostile_input.h"
 
@@ -180,6 +181,12 @@ TEST(GltfErrors, SidecarNamesAreChecked) {
   std::filesystem::remove(std::string(WALKRAD_TEST_OUTPUT) + "/sidecar-names.walkrad.json");
   EXPECT_EQ(test::refusalOf([&] { loadGltf(model, {"furlong", ""}); }, &what), Diag::UnknownUnits);
   EXPECT_EQ(test::refusalOf([&] { loadGltf(model, {"", "/nonexistent/x.walkrad.json"}); }, &what), Diag::FileUnreadable);
+}
+
+TEST(GltfErrors, ASidecarNumberBeyondDoubleIsPlaced) {
+  std::string what;
+  EXPECT_EQ(test::refusalOf([&] { parseGltfSidecar("{\n  \"patch_size\": 1e999}", "s.walkrad.json"); }, &what), Diag::NotFinite);
+  EXPECT_EQ(what, "s.walkrad.json:2:17: not a finite number: 1e999 is too large for a double");
 }
 
 // A sidecar's emission scale that takes a model's light out of range is the sidecar's fault.

@@ -209,12 +209,23 @@ TEST(SceneErrorsText, KeysGivenTwiceAreRefusedWithTheirPath) {
   }
 }
 
-TEST(SceneErrorsText, NumbersBeyondDoubleAreRefused) {
-  try {
-    parseScene(R"({"format": "walkrad-scene/1", "units": "m", "settings": {"patch_size": 1e999}})", "big.json");
-    FAIL();
-  } catch (const SceneError& e) {
-    EXPECT_EQ(e.diag(), Diag::NotJson) << e.what();
+// A number too large for a double is placed by line and column, as syntax errors are; numbers
+// inside strings before it do not count.
+TEST(SceneErrorsText, NumbersBeyondDoubleAreRefusedWhereTheyAre) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"format": "walkrad-scene/1", "settings": {"patch_size": 1e999}})",
+       "big.json:1:58: not a finite number: 1e999 is too large for a double"},
+      {"{\"format\": \"walkrad-scene/1\",\n \"a\\\" 1e999\": [1e300,\n   -12e308]}",
+       "big.json:3:4: not a finite number: -12e308 is too large for a double"},
+      {"[" + std::string(400, '9') + "]", "big.json:1:2: not a finite number: " + std::string(400, '9') + " is too large for a double"}};
+  for (const auto& [text, message] : cases) {
+    try {
+      parseScene(text, "big.json");
+      ADD_FAILURE() << text;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.diag(), Diag::NotFinite) << e.what();
+      EXPECT_EQ(e.what(), message);
+    }
   }
 }
 
