@@ -1,4 +1,4 @@
-// Every way a scene file (or a glTF model, or its sidecar) can be refused, in one table, so tests check ids rather than wording.
+// Every way a scene file (or a glTF model, the files it names, or its sidecar) can be refused, in one table, so tests check ids rather than wording.
 #pragma once
 
 #include <ostream>
@@ -10,6 +10,8 @@ namespace engine {
 // X(id, what the user is told)
 #define WALKRAD_SCENE_DIAGNOSTICS(X)                                                  \
   X(FileUnreadable, "cannot read the file")                                           \
+  X(NotRegularFile, "not a regular file")                                             \
+  X(FileTooLarge, "file larger than walkrad reads (1 GiB)")                           \
   X(NotJson, "not valid JSON")                                                        \
   X(WrongFormat, "unsupported format (expected \"walkrad-scene/1\")")               \
   X(MissingField, "missing required field")                                           \
@@ -37,6 +39,9 @@ namespace engine {
   X(BadGltfReference, "glTF index refers to nothing")                                 \
   X(BadAccessor, "glTF accessor does not fit its buffer")                             \
   X(NodeLoop, "glTF node hierarchy loops or shares a node")                           \
+  X(UriAbsolute, "glTF URI is an absolute path (only files in the model's folder are read)") \
+  X(UriOutsideFolder, "glTF URI leads outside the model's folder")                    \
+  X(WrongByteLength, "glTF buffer's data is not byteLength bytes long")               \
   X(NoTriangles, "the model has no triangles")                                        \
   X(UnknownNode, "no top-level node of that name in the model")                       \
   X(GltfOnly, "this option applies to glTF models only")

@@ -4,8 +4,10 @@
 #include "engine/contact_cutouts.h"
 #include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
+#include "engine/gltf_files.h"
 #include "engine/gltf_sidecar.h"
 #include "engine/json_reader.h"
+#include "engine/unique_names.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -39,13 +41,6 @@ std::optional<Vec3> extrasVec3(const tinygltf::Value& extras, const char* key) {
     v[c] = value.Get(c).GetNumberAsDouble();
   }
   return v;
-}
-
-// A name unique among `taken`: the name itself, else "NAME 2", "NAME 3", ...
-std::string uniqueName(const std::string& name, std::set<std::string>& taken) {
-  std::string candidate = name;
-  for (int n = 2; !taken.insert(candidate).second; ++n) candidate = name + " " + std::to_string(n);
-  return candidate;
 }
 
 // ---- accessors ----
@@ -195,7 +190,8 @@ class GltfImporter {
     readMaterials();
     const std::vector<int> roots = rootNodes();
     visited_.assign(model_.nodes.size(), 0);
-    std::set<std::string> objectNames, rootNames;
+    UniqueNames objectNames;
+    std::set<std::string> rootNames;
     for (int root : roots) rootNames.insert(model_.nodes[static_cast<size_t>(root)].name);
     for (const auto& [name, movable] : sidecar_.movableObjects)
       if (!rootNames.count(name)) throw SceneError(Diag::UnknownNode, sidecarFile_, child("objects", name));
@@ -204,10 +200,10 @@ class GltfImporter {
       const size_t before = triangles_.size();
       const glm::dmat4 world = localMatrix(node, file_, child("nodes", static_cast<size_t>(root)));
       const auto object = static_cast<uint32_t>(scene_.objects.size());
-      visit(root, world, object);
+      readSubtree(static_cast<size_t>(root), world, object);
       if (triangles_.size() == before) continue;  // a camera or an empty group: nothing to drag
       Object o;
-      o.name = uniqueName(node.name.empty() ? child("node", static_cast<size_t>(root)) : node.name, objectNames);
+      o.name = objectNames.add(node.name.empty() ? child("node", static_cast<size_t>(root)) : node.name);
       o.position = Vec3(world[3]);
       const auto own = sidecar_.movableObjects.find(node.name);
       o.movable = own != sidecar_.movableObjects.end() ? own->second : sidecar_.movable.value_or(true);
@@ -228,13 +224,12 @@ class GltfImporter {
   }
 
   void readMaterials() {
-    std::set<std::string> names;
     std::set<std::string> overridden;
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const tinygltf::Material& m = model_.materials[i];
       const std::string place = child("materials", i);
       Material material;
-      material.name = uniqueName(m.name.empty() ? child("material", i) : m.name, names);
+      material.name = materialNames_.add(m.name.empty() ? child("material", i) : m.name);
       const std::vector<double>& base = m.pbrMetallicRoughness.baseColorFactor;
       if (base.size() != 4) fail(Diag::WrongType, place + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
       const Vec3 texture = textureMean(model_, m.pbrMetallicRoughness.baseColorTexture.index);
@@ -279,9 +274,7 @@ class GltfImporter {
   uint32_t defaultMaterial() {
     if (!defaultMaterial_) {
       Material material;
-      std::set<std::string> names;
-      for (const Material& m : scene_.materials) names.insert(m.name);
-      material.name = uniqueName("default", names);
+      material.name = materialNames_.add("default");
       material.reflectance = Vec3{kMaxReflectance};
       defaultMaterial_ = static_cast<uint32_t>(scene_.materials.size());
       scene_.materials.push_back(std::move(material));
@@ -312,22 +305,30 @@ class GltfImporter {
     return roots;
   }
 
-  // A node and its subtree; a node met twice (a loop, or shared by two parents) is refused, so
-  // the walk ends.
-  void visit(int index, const glm::dmat4& world, uint32_t object) {
-    const size_t i = static_cast<size_t>(index);
-    const std::string place = child("nodes", i);
-    if (visited_[i]) fail(Diag::NodeLoop, place);
-    visited_[i] = 1;
-    const tinygltf::Node& node = model_.nodes[i];
-    if (node.mesh >= 0) {
-      if (static_cast<size_t>(node.mesh) >= model_.meshes.size()) fail(Diag::BadGltfReference, place + ".mesh", std::to_string(node.mesh));
-      readMesh(static_cast<size_t>(node.mesh), world, object);
-    }
-    if (node.camera >= 0) readCamera(node, i, world);
-    for (int c : node.children) {
-      if (c < 0 || static_cast<size_t>(c) >= model_.nodes.size()) fail(Diag::BadGltfReference, place + ".children", std::to_string(c));
-      visit(c, world * localMatrix(model_.nodes[static_cast<size_t>(c)], file_, child("nodes", static_cast<size_t>(c))), object);
+  // A top-level node and its subtree, depth first in the file's order, on a stack of its own (a
+  // chain of nodes is as deep as the file is long). A node met twice (a loop, or shared by two
+  // parents) is refused, so the walk ends.
+  void readSubtree(size_t root, const glm::dmat4& rootWorld, uint32_t object) {
+    std::vector<std::pair<size_t, glm::dmat4>> pending{{root, rootWorld}};  // nodes and their world transforms
+    while (!pending.empty()) {
+      const auto [i, world] = pending.back();
+      pending.pop_back();
+      const std::string place = child("nodes", i);
+      if (visited_[i]) fail(Diag::NodeLoop, place);
+      visited_[i] = 1;
+      const tinygltf::Node& node = model_.nodes[i];
+      if (node.mesh >= 0) {
+        if (static_cast<size_t>(node.mesh) >= model_.meshes.size()) fail(Diag::BadGltfReference, place + ".mesh", std::to_string(node.mesh));
+        readMesh(static_cast<size_t>(node.mesh), world, object);
+      }
+      if (node.camera >= 0) readCamera(node, i, world);
+      const size_t firstChild = pending.size();
+      for (int c : node.children) {
+        if (c < 0 || static_cast<size_t>(c) >= model_.nodes.size()) fail(Diag::BadGltfReference, place + ".children", std::to_string(c));
+        const auto ci = static_cast<size_t>(c);
+        pending.emplace_back(ci, world * localMatrix(model_.nodes[ci], file_, child("nodes", ci)));
+      }
+      std::reverse(pending.begin() + static_cast<std::ptrdiff_t>(firstChild), pending.end());  // the first child on top
     }
   }
 
@@ -403,7 +404,7 @@ class GltfImporter {
     const tinygltf::Camera& c = model_.cameras[static_cast<size_t>(node.camera)];
     if (c.type != "perspective") return;  // orthographic views are not walked through
     Camera camera;
-    camera.name = uniqueName(!c.name.empty() ? c.name : !node.name.empty() ? node.name : child("camera", static_cast<size_t>(node.camera)), cameraNames_);
+    camera.name = cameraNames_.add(!c.name.empty() ? c.name : !node.name.empty() ? node.name : child("camera", static_cast<size_t>(node.camera)));
     camera.position = Vec3(world[3]);
     const glm::dmat3 linear(world);
     const Vec3 forward = linear * Vec3(0, 0, -1), up = linear * Vec3(0, 1, 0);
@@ -424,7 +425,7 @@ class GltfImporter {
   std::vector<uint8_t> twoSided_;  // per material
   std::optional<uint32_t> defaultMaterial_;
   std::vector<uint8_t> visited_;  // per node
-  std::set<std::string> cameraNames_;
+  UniqueNames materialNames_, cameraNames_;
   std::vector<SceneTriangle> triangles_;
   std::vector<size_t> objectNode_;  // per object
   ImportCounts counts_;
@@ -456,9 +457,11 @@ void addSky(Scene& scene, const Vec3& emission, const Vec3& lo, const Vec3& hi) 
   scene.surfaces.push_back(std::move(s));
 }
 
+// The first line of tinygltf's message, cut short (it may quote a whole data: URI).
 std::string firstLine(const std::string& text) {
-  const size_t end = text.find('\n');
-  return end == std::string::npos ? text : text.substr(0, end);
+  constexpr size_t kLongest = 200;
+  const std::string line = text.substr(0, text.find('\n'));
+  return line.size() <= kLongest ? line : line.substr(0, kLongest) + "...";
 }
 
 
@@ -493,15 +496,17 @@ Scene importGltf(std::string_view bytes, const std::string& file, const LoadOpti
   if (sidecarFile.empty() && std::filesystem::exists(sidecarPathFor(file))) sidecarFile = sidecarPathFor(file);
   if (!sidecarFile.empty()) sidecar = parseGltfSidecar(readInputFile(sidecarFile), sidecarFile);
 
+  // The files the model names, confined to its folder (gltf_files.h); tinygltf reads no other.
+  GltfFiles files(bytes, file);
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(files.callbacks());
   tinygltf::Model model;
   std::string error, warning;
-  const std::string directory = std::filesystem::path(file).parent_path().string();
   const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
   const bool read = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                         static_cast<unsigned int>(bytes.size()), directory)
+                                                         static_cast<unsigned int>(bytes.size()), "")
                            : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
-                                                        static_cast<unsigned int>(bytes.size()), directory);
+                                                        static_cast<unsigned int>(bytes.size()), "");
   if (!read) throw SceneError(Diag::NotGltf, file, "", error.empty() ? "tinygltf gave no reason" : firstLine(error));
 
   Scene scene;

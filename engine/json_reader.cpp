@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <set>
+#include <string>
 #include <vector>
 #include <sstream>
 
@@ -79,6 +81,39 @@ class DuplicateKeyGuard {
   std::vector<Frame> frames_;
 };
 
+constexpr std::string_view kNumberCharacters = "+-.0123456789eE";
+
+// ":LINE:COLUMN" of a byte offset, as the messages of syntax errors place them.
+std::string lineAndColumn(std::string_view text, size_t offset) {
+  offset = std::min(offset, text.size());
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < offset; ++i) {
+    if (text[i] == '\n') ++line, column = 1;
+    else ++column;
+  }
+  return ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+// The offset of the first number (outside strings) that overflows a double, where nlohmann's
+// parser stopped; the text's end when there is none.
+size_t firstOverflowingNumber(std::string_view text) {
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '-' || std::isdigit(static_cast<unsigned char>(c))) {
+      const size_t end = std::min(text.find_first_not_of(kNumberCharacters, i), text.size());
+      if (std::isinf(std::strtod(std::string(text.substr(i, end - i)).c_str(), nullptr))) return i;
+      i = end - 1;
+    }
+  }
+  return text.size();
+}
+
 }  // namespace
 
 std::string child(const std::string& path, std::string_view key) {
@@ -107,20 +142,13 @@ Json JsonReader::parse(std::string_view text) const {
   try {
     return Json::parse(text.begin(), text.end(), DuplicateKeyGuard(file_));
   } catch (const Json::parse_error& e) {
-    // Turn the byte offset into a line and column.
-    const size_t offset = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i < offset; ++i) {
-      if (text[i] == '\n') ++line, column = 1;
-      else ++column;
-    }
     std::string what = e.what();
     if (const size_t colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
-    throw SceneError(Diag::NotJson, file_, ":" + std::to_string(line) + ":" + std::to_string(column), what);
-  } catch (const Json::exception& e) {  // e.g. a number too large for a double
-    std::string what = e.what();
-    if (const size_t bracket = what.find("] "); bracket != std::string::npos) what = what.substr(bracket + 2);
-    throw SceneError(Diag::NotJson, file_, "", what);
+    throw SceneError(Diag::NotJson, file_, lineAndColumn(text, e.byte == 0 ? 0 : e.byte - 1), what);
+  } catch (const Json::out_of_range&) {  // nlohmann names the number too large for a double, not where it is
+    const size_t at = firstOverflowingNumber(text);
+    const std::string number(text.substr(at, text.find_first_not_of(kNumberCharacters, at) - at));
+    throw SceneError(Diag::NotFinite, file_, lineAndColumn(text, at), number + " is too large for a double");
   }
 }
 

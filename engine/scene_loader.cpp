@@ -4,19 +4,16 @@
 #include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
 #include "engine/gltf_loader.h"
+#include "engine/input_file.h"
 #include "engine/json_reader.h"
 #include "engine/solid_surfaces.h"
 
 #include <glm/common.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
+#include <variant>
 
 namespace engine {
 
@@ -323,14 +320,9 @@ Scene parseScene(std::string_view text, const std::string& file) {
 }
 
 std::string readInputFile(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
-    throw SceneError(Diag::FileUnreadable, path, "", error ? error.message() : "not a regular file");
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (!file) throw SceneError(Diag::FileUnreadable, path, "", std::strerror(errno));
-  return text.str();
+  std::variant<std::string, FileRefusal> read = readRegularFile(path);
+  if (const FileRefusal* refusal = std::get_if<FileRefusal>(&read)) throw SceneError(refusal->diag, path, "", refusal->detail);
+  return std::get<std::string>(std::move(read));
 }
 
 Scene loadScene(const std::string& path, const LoadOptions& options) {

@@ -56,7 +56,9 @@ void overridePatchSize(Scene& scene, double patchSize);
 // The largest side of the scene's bounding box (Scene::computeBounds), in scene units.
 double sceneExtent(const Scene& scene);
 
-// The whole text of a file; throws SceneError (FileUnreadable) naming it when it cannot be read.
+// The whole text of a file (input_file.h: a regular file of at most kMaxInputFileBytes, opened
+// without blocking); throws SceneError naming it when it cannot be read (FileUnreadable,
+// NotRegularFile, FileTooLarge).
 std::string readInputFile(const std::string& path);
 
 // Metres per unit for a `units` value, or 0 when unknown.

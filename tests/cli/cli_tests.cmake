@@ -213,3 +213,24 @@ walkrad_cli_test(check_units_for_scene_file 2 ARGS check ${PROJECT_SOURCE_DIR}/a
                  STDERR "cornell.json: --units: this option applies to glTF models only")
 walkrad_cli_test(export_gltf_model 0 ARGS export ${cli_dir}/no_light.gltf --out ${out}/no-light-export.glb --quiet
                  FILE ${out}/no-light-export.glb)
+
+# A glTF model reads only regular files inside its own folder (README, "Models from Blender");
+# every other URI is exit 2 naming it, and export writes nothing.
+walkrad_cli_test(gltf_uri_outside 2 ARGS render ${cli_dir}/uri_outside.gltf --out ${out}/uri-outside.png
+                 STDERR "uri_outside.gltf: buffers\\[0\\]\\.uri: glTF URI leads outside the model's folder: \"\\.\\./CMakeLists\\.txt\"$"
+                 NO_FILE ${out}/uri-outside.png)
+walkrad_cli_test(export_gltf_uri_outside 2 ARGS export ${cli_dir}/uri_outside.gltf --out ${out}/uri-outside.glb
+                 STDERR "uri_outside.gltf: buffers\\[0\\]\\.uri: glTF URI leads outside" NO_FILE ${out}/uri-outside.glb)
+walkrad_cli_test(gltf_uri_absolute 2 ARGS mesh ${cli_dir}/uri_absolute.gltf
+                 STDERR "uri_absolute.gltf: buffers\\[0\\]\\.uri: glTF URI is an absolute path \\(only files in the model's folder are read\\): \"/etc/passwd\"$")
+walkrad_cli_test(gltf_uri_folder 2 ARGS check ${cli_dir}/uri_folder.gltf
+                 STDERR "uri_folder.gltf: buffers\\[0\\]\\.uri: not a regular file: \"\\.\": a folder$")
+walkrad_cli_test(gltf_data_uri_length 2 ARGS mesh ${cli_dir}/data_uri_length.gltf
+                 STDERR "data_uri_length.gltf: buffers\\[0\\]\\.uri: glTF buffer's data is not byteLength bytes long: \"data:application/octet-stream;base64,[^\"]*\": decodes to 60 bytes, byteLength says 64$")
+# Input files are regular files: a device is refused unread (/dev/zero never ends).
+walkrad_cli_test(mesh_device_input 2 ARGS mesh /dev/zero STDERR "^/dev/zero: not a regular file: a device$")
+# A number too large for a double is placed by line and column, in scenes and polygon cases.
+walkrad_cli_test(huge_number 2 ARGS render ${cli_dir}/huge_number.json --out ${out}/huge.png
+                 STDERR "huge_number.json:3:31: not a finite number: 1e999 is too large for a double$" NO_FILE ${out}/huge.png)
+walkrad_cli_test(mesh_huge_number 2 ARGS mesh ${cli_dir}/huge_polygon.json
+                 STDERR "huge_polygon.json:2:22: not a finite number: 1e400 is too large for a double$")

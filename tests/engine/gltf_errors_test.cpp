@@ -3,7 +3,9 @@
 #include "engine/gltf_loader.h"
 
 #include "engine/diagnostics.h"
+#include "engine/gltf_sidecar.h"
 #include "tests/engine/gltf_writer.h"
+#include "tests/engine/hostile_input.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -34,17 +36,6 @@ GltfModel smallModel() {
   m.materials = {{"white", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0, ""}};
   m.cameras = {{"eye", 0.8}};
   return m;
-}
-
-Diag diagOf(const std::function<void()>& load, std::string* what = nullptr) {
-  try {
-    load();
-  } catch (const SceneError& e) {
-    if (what) *what = e.what();
-    return e.diag();
-  }
-  ADD_FAILURE() << "accepted";
-  return Diag::FileUnreadable;
 }
 
 // The .gltf text of smallModel() with one change made to its JSON.
@@ -90,7 +81,7 @@ const ErrorCase kCases[] = {
 TEST(GltfErrors, EachBreakageHasItsDiagnosticAndPlace) {
   for (const ErrorCase& c : kCases) {
     std::string what;
-    const Diag diag = diagOf([&] { parseGltf(edited(c.breakIt), "broken.gltf"); }, &what);
+    const Diag diag = test::refusalOf([&] { parseGltf(edited(c.breakIt), "broken.gltf"); }, &what);
     EXPECT_EQ(diag, c.diag) << c.name << ": " << what;
     EXPECT_EQ(what.rfind(std::string("broken.gltf") + (*c.place ? ": " : ""), 0), 0u) << c.name << ": " << what;
     if (*c.place) {
@@ -132,26 +123,70 @@ TEST(GltfErrors, ATruncatedExternalBufferIsRefused) {
   j["buffers"][0]["uri"] = "cut-buffer.bin";
   const std::string path = writeFile("cut-buffer.gltf", j.dump());
   std::string what;
-  EXPECT_EQ(diagOf([&] { loadGltf(path); }, &what), Diag::NotGltf);
-  EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << what;
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(path); }, &what), Diag::WrongByteLength);
+  EXPECT_EQ(what.rfind(path + ": buffers[0].uri: ", 0), 0u) << what;
+}
+
+// Hostile models the loader survives quickly, in work linear in the file: 40,000 materials of
+// one name (named apart in one pass each), a chain of 20,000 nested nodes (walked without
+// recursion, its transforms composed all the way down).
+TEST(GltfErrors, FortyThousandMaterialsOfOneNameLoad) {
+  GltfModel m = smallModel();
+  m.materials.assign(40000, {"paint", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0, ""});
+  m.materials.push_back({"paint 2", {0.5, 0.5, 0.5, 1}, Vec3{0}, 0, ""});
+  const Scene scene = parseGltf(test::gltfText(m), "paint.gltf");
+  ASSERT_EQ(scene.materials.size(), 40001u);
+  EXPECT_EQ(scene.materials[0].name, "paint");
+  EXPECT_EQ(scene.materials[1].name, "paint 2");
+  EXPECT_EQ(scene.materials[39999].name, "paint 40000");
+  EXPECT_EQ(scene.materials[40000].name, "paint 2 2");
+}
+
+TEST(GltfErrors, AChainOfTwentyThousandNodesLoads) {
+  constexpr int kDepth = 20000;
+  GltfModel m = smallModel();
+  m.nodes.resize(kDepth);
+  for (int i = 0; i < kDepth; ++i) {
+    test::GltfNode& node = m.nodes[static_cast<size_t>(i)];
+    node = {"link " + std::to_string(i), {}, {}, {0.001, 0, 0}, {}, {}, {}, -1};
+    if (i + 1 < kDepth) node.children = {i + 1};
+  }
+  m.nodes.back().primitives = smallModel().nodes[0].primitives;
+  m.roots = {0};
+  m.cameras.clear();
+  const Scene scene = parseGltf(test::gltfText(m), "chain.gltf");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.objects[0].name, "link 0");
+  EXPECT_NEAR(scene.boundsMin.x, kDepth * 0.001, 1e-6);
+  EXPECT_NEAR(scene.boundsMax.x, kDepth * 0.001 + 1, 1e-6);
+  m.nodes.back().children = {kDepth / 2};  // and the chain's end loops back to its middle
+  std::string what;
+  EXPECT_EQ(test::refusalOf([&] { parseGltf(test::gltfText(m), "loop.gltf"); }, &what), Diag::NodeLoop);
+  EXPECT_EQ(what, "loop.gltf: nodes[" + std::to_string(kDepth / 2) + "]: " + describe(Diag::NodeLoop));
 }
 
 TEST(GltfErrors, SidecarNamesAreChecked) {
   const std::string model = writeFile("sidecar-names.gltf", test::gltfText(smallModel()));
   std::string what;
   writeFile("sidecar-names.walkrad.json", R"({"objects": {"sofa": {"movable": false}}})");
-  EXPECT_EQ(diagOf([&] { loadGltf(model); }, &what), Diag::UnknownNode);
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(model); }, &what), Diag::UnknownNode);
   EXPECT_NE(what.find("sidecar-names.walkrad.json: objects.sofa"), std::string::npos) << what;
   writeFile("sidecar-names.walkrad.json", R"({"materials": {"oak": {"omit": true}}})");
-  EXPECT_EQ(diagOf([&] { loadGltf(model); }, &what), Diag::UnknownMaterial);
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(model); }, &what), Diag::UnknownMaterial);
   EXPECT_NE(what.find("sidecar-names.walkrad.json: materials.oak"), std::string::npos) << what;
   writeFile("sidecar-names.walkrad.json", R"({"patch_sise": 1})");
-  EXPECT_EQ(diagOf([&] { loadGltf(model); }, &what), Diag::UnknownKey);
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(model); }, &what), Diag::UnknownKey);
   writeFile("sidecar-names.walkrad.json", R"({"units": "furlong"})");
-  EXPECT_EQ(diagOf([&] { loadGltf(model); }, &what), Diag::UnknownUnits);
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(model); }, &what), Diag::UnknownUnits);
   std::filesystem::remove(std::string(WALKRAD_TEST_OUTPUT) + "/sidecar-names.walkrad.json");
-  EXPECT_EQ(diagOf([&] { loadGltf(model, {"furlong", ""}); }, &what), Diag::UnknownUnits);
-  EXPECT_EQ(diagOf([&] { loadGltf(model, {"", "/nonexistent/x.walkrad.json"}); }, &what), Diag::FileUnreadable);
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(model, {"furlong", ""}); }, &what), Diag::UnknownUnits);
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(model, {"", "/nonexistent/x.walkrad.json"}); }, &what), Diag::FileUnreadable);
+}
+
+TEST(GltfErrors, ASidecarNumberBeyondDoubleIsPlaced) {
+  std::string what;
+  EXPECT_EQ(test::refusalOf([&] { parseGltfSidecar("{\n  \"patch_size\": 1e999}", "s.walkrad.json"); }, &what), Diag::NotFinite);
+  EXPECT_EQ(what, "s.walkrad.json:2:17: not a finite number: 1e999 is too large for a double");
 }
 
 // A sidecar's emission scale that takes a model's light out of range is the sidecar's fault.
@@ -161,7 +196,7 @@ TEST(GltfErrors, AnEmissionScaleTooLargeIsTheSidecars) {
   const std::string model = writeFile("sidecar-scale.gltf", test::gltfText(m));
   writeFile("sidecar-scale.walkrad.json", R"({"emission_scale": 1000000})");
   std::string what;
-  EXPECT_EQ(diagOf([&] { loadGltf(model); }, &what), Diag::OutOfRange);
+  EXPECT_EQ(test::refusalOf([&] { loadGltf(model); }, &what), Diag::OutOfRange);
   EXPECT_NE(what.find("sidecar-scale.walkrad.json: emission_scale"), std::string::npos) << what;
   writeFile("sidecar-scale.walkrad.json", R"({"emission_scale": 1000})");
   EXPECT_DOUBLE_EQ(loadGltf(model).materials[0].emission.x, 2000);
@@ -169,16 +204,18 @@ TEST(GltfErrors, AnEmissionScaleTooLargeIsTheSidecars) {
 
 TEST(GltfErrors, ModelOptionsAreRefusedForSceneFiles) {
   std::string what;
-  EXPECT_EQ(diagOf([&] { loadScene(std::string(WALKRAD_ASSETS) + "/cornell.json", {"m", ""}); }, &what), Diag::GltfOnly);
+  EXPECT_EQ(test::refusalOf([&] { loadScene(std::string(WALKRAD_ASSETS) + "/cornell.json", {"m", ""}); }, &what), Diag::GltfOnly);
   EXPECT_NE(what.find("--units"), std::string::npos) << what;
 }
 
 // Every glTF diagnostic of the table is produced above.
 TEST(GltfErrors, EveryGltfDiagnosticHasACase) {
-  std::set<Diag> covered{Diag::UnknownNode, Diag::GltfOnly};  // the tests above
+  std::set<Diag> covered{Diag::UnknownNode, Diag::GltfOnly, Diag::WrongByteLength};  // the tests above
   for (const ErrorCase& c : kCases) covered.insert(c.diag);
+  // The files a model names: gltf_files_test.cpp.
+  covered.insert({Diag::UriAbsolute, Diag::UriOutsideFolder});
   for (Diag d : {Diag::NotGltf, Diag::BadGltfReference, Diag::BadAccessor, Diag::NodeLoop, Diag::NoTriangles, Diag::UnknownNode,
-                 Diag::GltfOnly})
+                 Diag::GltfOnly, Diag::UriAbsolute, Diag::UriOutsideFolder, Diag::WrongByteLength})
     EXPECT_TRUE(covered.count(d)) << describe(d) << " has no test";
 }
 

@@ -68,6 +68,17 @@ TEST(PolygonCase, PatchSizesTooSmallForThePolygonAreRefused) {
   EXPECT_THROW(casePatchSize(without, std::nullopt, in), SceneError);
 }
 
+// A coordinate too large for a double is placed by line and column.
+TEST(PolygonCase, NumbersBeyondDoubleAreRefusedWhereTheyAre) {
+  try {
+    parse("{\"patch_size\": 1,\n \"outer\": [[0, 0], [-1e999, 0], [1, 1]]}");
+    ADD_FAILURE() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.diag(), Diag::NotFinite) << e.what();
+    EXPECT_STREQ(e.what(), "case.json:2:21: not a finite number: -1e999 is too large for a double");
+  }
+}
+
 TEST(PolygonCase, TellsCasesFromScenes) {
   const JsonReader in("x.json");
   EXPECT_TRUE(isPolygonCase(in.parse(R"({"outer": []})")));

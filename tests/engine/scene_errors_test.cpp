@@ -209,12 +209,23 @@ TEST(SceneErrorsText, KeysGivenTwiceAreRefusedWithTheirPath) {
   }
 }
 
-TEST(SceneErrorsText, NumbersBeyondDoubleAreRefused) {
-  try {
-    parseScene(R"({"format": "walkrad-scene/1", "units": "m", "settings": {"patch_size": 1e999}})", "big.json");
-    FAIL();
-  } catch (const SceneError& e) {
-    EXPECT_EQ(e.diag(), Diag::NotJson) << e.what();
+// A number too large for a double is placed by line and column, as syntax errors are; numbers
+// inside strings before it do not count.
+TEST(SceneErrorsText, NumbersBeyondDoubleAreRefusedWhereTheyAre) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"format": "walkrad-scene/1", "settings": {"patch_size": 1e999}})",
+       "big.json:1:58: not a finite number: 1e999 is too large for a double"},
+      {"{\"format\": \"walkrad-scene/1\",\n \"a\\\" 1e999\": [1e300,\n   -12e308]}",
+       "big.json:3:4: not a finite number: -12e308 is too large for a double"},
+      {"[" + std::string(400, '9') + "]", "big.json:1:2: not a finite number: " + std::string(400, '9') + " is too large for a double"}};
+  for (const auto& [text, message] : cases) {
+    try {
+      parseScene(text, "big.json");
+      ADD_FAILURE() << text;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.diag(), Diag::NotFinite) << e.what();
+      EXPECT_EQ(e.what(), message);
+    }
   }
 }
 
@@ -236,13 +247,15 @@ TEST(SceneErrorsText, EveryTruncationIsRefused) {
 }
 
 TEST(SceneErrorsText, MissingFileAndDirectoryAreUnreadable) {
-  for (const std::string& path : {std::string("/nonexistent/scene.json"), std::string(WALKRAD_TEST_OUTPUT)}) {
+  const std::pair<std::string, Diag> cases[] = {{"/nonexistent/scene.json", Diag::FileUnreadable},
+                                                {WALKRAD_TEST_OUTPUT, Diag::NotRegularFile}};
+  for (const auto& [path, diag] : cases) {
     try {
       loadScene(path);
       FAIL() << path;
     } catch (const SceneError& e) {
-      EXPECT_EQ(e.diag(), Diag::FileUnreadable);
-      EXPECT_EQ(std::string(e.what()).rfind(path + ": cannot read the file", 0), 0u) << e.what();
+      EXPECT_EQ(e.diag(), diag);
+      EXPECT_EQ(std::string(e.what()).rfind(path + ": " + describe(diag), 0), 0u) << e.what();
     }
   }
 }
@@ -250,9 +263,11 @@ TEST(SceneErrorsText, MissingFileAndDirectoryAreUnreadable) {
 // A test per way of breaking a scene: every diagnostic of the table is produced above.
 TEST(SceneErrorsText, EveryDiagnosticHasACase) {
   std::set<Diag> covered{Diag::NotJson, Diag::FileUnreadable, Diag::DuplicateKey};  // the tests below
+  // Files that are no regular file or too large: input_file_test.cpp.
+  covered.insert({Diag::NotRegularFile, Diag::FileTooLarge});
   // glTF models' own: gltf_errors_test.cpp has a case for each.
   covered.insert({Diag::NotGltf, Diag::BadGltfReference, Diag::BadAccessor, Diag::NodeLoop, Diag::NoTriangles,
-                  Diag::UnknownNode, Diag::GltfOnly});
+                  Diag::UnknownNode, Diag::GltfOnly, Diag::UriAbsolute, Diag::UriOutsideFolder, Diag::WrongByteLength});
   for (const ErrorCase& c : kCases) covered.insert(c.diag);
 #define WALKRAD_EXPECT_COVERED(id, text) EXPECT_TRUE(covered.count(Diag::id)) << #id " has no test";
   WALKRAD_SCENE_DIAGNOSTICS(WALKRAD_EXPECT_COVERED)
