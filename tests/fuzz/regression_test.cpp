@@ -16,6 +16,10 @@
 #include <string>
 #include <vector>
 
+// Under the asan preset (ASan and UBSan) an undefined-behaviour report fails the replay, as it
+// does under libFuzzer; a build without sanitizers never calls this.
+extern "C" const char* __ubsan_default_options() { return "halt_on_error=1:print_stacktrace=1"; }
+
 namespace fuzz {
 namespace {
 
