@@ -1,7 +1,8 @@
 // The fuzz targets: one entry per loader or algorithm that takes what a stranger could send.
 // Each fuzzOne() takes any bytes and returns normally when walkrad does what it promises:
-// an input it accepts is processed, one it refuses is refused by the documented exception
-// (engine::SceneError, and for the mesher std::invalid_argument), which fuzzOne catches.
+// an input it accepts is processed (into what the next stage accepts), one it refuses is refused
+// by the documented exception (engine::SceneError, and for the mesher std::invalid_argument),
+// which fuzzOne catches.
 // Anything else (a crash, a sanitizer report, another exception, a hang, memory without
 // bound) is a finding. libfuzzer_main.cpp drives one of them under libFuzzer (the fuzz
 // preset); regression_test.cpp replays every saved input through the same function with gtest.
@@ -13,7 +14,8 @@
 namespace fuzz {
 
 // Scene text (spec/scene-format.md) from bytes: parsed, validated and preprocessed (coplanar
-// merging, contact cut-outs) as `walkrad render` does before meshing.
+// merging, contact cut-outs) as `walkrad render` does before meshing; every surface made must be
+// a polygon the mesher accepts (meshable.h), as for the glTF and model-check targets.
 namespace scene_text { void fuzzOne(const uint8_t* data, size_t size); }
 
 // A glTF model, .gltf text or .glb bytes, imported as `walkrad render model.gltf` does. It is

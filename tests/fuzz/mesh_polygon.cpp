@@ -14,11 +14,10 @@
 // pass the independent mesh check (mesher/mesh_check.h), or the process aborts.
 #include "tests/fuzz/fuzz_targets.h"
 
-#include "engine/diagnostics.h"
-#include "engine/polygon_case.h"
 #include "mesher/mesh_check.h"
 #include "mesher/mesher.h"
 #include "tests/fuzz/byte_reader.h"
+#include "tests/fuzz/meshable.h"
 
 #include <cmath>
 #include <cstdio>
@@ -98,25 +97,6 @@ Decoded decode(const uint8_t* data, size_t size) {
   return out;
 }
 
-engine::Json ringJson(const Ring2& ring) {
-  engine::Json points = engine::Json::array();
-  for (const Vec2& p : ring) points.push_back({p.x, p.y});
-  return points;
-}
-
-// What `walkrad mesh` would accept: the polygon case's validation.
-bool acceptedAsPolygonCase(const ::mesher::PolygonWithHoles& polygon) {
-  engine::Json root = {{"outer", ringJson(polygon.outer)}, {"holes", engine::Json::array()}};
-  for (const Ring2& hole : polygon.holes) root["holes"].push_back(ringJson(hole));
-  const engine::JsonReader in("fuzz.json");
-  try {
-    engine::parsePolygonCase(root, in);
-    return true;
-  } catch (const engine::SceneError&) {
-    return false;
-  }
-}
-
 // Coordinates that reach the mesher at all: scenes and polygon cases refuse anything else.
 bool finiteAndBounded(const ::mesher::PolygonWithHoles& polygon) {
   auto bounded = [](const Ring2& ring) {
@@ -146,7 +126,8 @@ void checkMeshOrAbort(const ::mesher::PolygonWithHoles& polygon, const ::mesher:
 void fuzzOne(const uint8_t* data, size_t size) {
   const Decoded in = decode(data, size);
   if (!finiteAndBounded(in.polygon) || !(in.patchSize > 0)) return;
-  const bool valid = acceptedAsPolygonCase(in.polygon);
+  // What `walkrad mesh` would accept.
+  const bool valid = !refusalAsPolygonCase(in.polygon);
   if (!valid && !in.unchecked) return;
   try {
     const ::mesher::Mesh mesh = ::mesher::meshPolygon(in.polygon, {in.patchSize});

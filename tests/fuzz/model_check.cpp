@@ -15,6 +15,7 @@
 #include "engine/scene_loader.h"
 #include "tests/engine/gltf_writer.h"
 #include "tests/fuzz/byte_reader.h"
+#include "tests/fuzz/meshable.h"
 #include "tests/fuzz/temp_folder.h"
 
 #include <fstream>
@@ -73,7 +74,7 @@ void checkSoup(const uint8_t* data, size_t size) {
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
   const engine::Scene faces = engine::loadGltfFaces(file);
   for (const engine::Finding& f : engine::checkModel(faces)) engine::describeLocation(faces, f);
-  engine::parseGltf(bytes, file);
+  expectMeshableSurfaces(engine::parseGltf(bytes, file));
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "engine/json_reader.h"
 #include "engine/scene_loader.h"
 #include "tests/fuzz/byte_reader.h"
+#include "tests/fuzz/meshable.h"
 
 #include <cmath>
 #include <numbers>
@@ -127,10 +128,8 @@ std::string sceneFromBytes(const uint8_t* data, size_t size) {
 void fuzzOne(const uint8_t* data, size_t size) {
   const bool text = size > 0 && data[0] == '{';
   try {
-    if (text)
-      engine::parseScene(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.json");
-    else
-      engine::parseScene(sceneFromBytes(data, size), "fuzz.json");
+    const std::string decoded = text ? std::string() : sceneFromBytes(data, size);
+    expectMeshableSurfaces(engine::parseScene(text ? std::string_view(reinterpret_cast<const char*>(data), size) : decoded, "fuzz.json"));
   } catch (const engine::SceneError&) {
     // Refused with its place: what bad input must get.
   }
