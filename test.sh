@@ -6,7 +6,7 @@ cd "$(dirname "$0")"
 scripts/setup.sh
 ctest --preset release "$@"
 if scripts/fuzz.sh --available; then
-  scripts/fuzz.sh --allow-known 0.5
+  scripts/fuzz.sh --quick 0.5
 else
   echo "test.sh: no clang++ with libFuzzer (packages clang, libclang-rt-dev): the short fuzzing run is skipped"
 fi

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# scripts/fuzz.sh [--allow-known] MINUTES [TARGET...]: builds the fuzz preset (clang, libFuzzer,
+# scripts/fuzz.sh [--quick] MINUTES [TARGET...]: builds the fuzz preset (clang, libFuzzer,
 # ASan, UBSan) into build-fuzz/ and runs every fuzz target of tests/fuzz (or those named) for
 # MINUTES each (a decimal: 0.5 is 30 s), two at a time (FUZZ_JOBS=N to change). Each starts from
 # its seeds (tests/fuzz/corpus/TARGET) and what earlier runs kept (build-fuzz/corpus/TARGET).
 # A crash, a sanitizer report, an unexpected exception, a hang (over 10 s) or more than 2.5 GB is
 # a finding: its input is saved in build-fuzz/findings/TARGET/ and the run goes on (libFuzzer's
 # fork mode), so one finding does not hide the next. Prints each target's executions and
-# findings; exits 1 when there is any, except, with --allow-known (./test.sh), in targets that
-# have reproducers of findings still open in tests/fuzz/known/TARGET.
+# findings; exits 1 when there is any.
+# --quick (./test.sh's short run): starts from the seeds alone (what earlier runs kept may hold
+# inputs that take seconds each, which would make the run's length unpredictable), and does not
+# fail on targets that have reproducers of findings still open in tests/fuzz/known/TARGET.
 # scripts/fuzz.sh --available: exits 0 when clang++ can build libFuzzer programs here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,10 +31,10 @@ available() {
 }
 
 if [[ ${1:-} == --available ]]; then available; exit; fi
-allow_known=0
-if [[ ${1:-} == --allow-known ]]; then allow_known=1; shift; fi
+quick=0
+if [[ ${1:-} == --quick ]]; then quick=1; shift; fi
 if [[ $# -lt 1 || ! $1 =~ ^[0-9]*\.?[0-9]+$ ]]; then
-  echo "usage: scripts/fuzz.sh [--allow-known] MINUTES [TARGET...] (targets: ${all_targets[*]})" >&2
+  echo "usage: scripts/fuzz.sh [--quick] MINUTES [TARGET...] (targets: ${all_targets[*]})" >&2
   exit 2
 fi
 if ! available; then
@@ -56,9 +58,14 @@ run() {
                  -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2560 -artifact_prefix="$out/findings/$target/")
   [[ -n ${dictionary[$target]:-} ]] && options+=(-dict="tests/fuzz/dictionaries/${dictionary[$target]}.dict")
   [[ -n ${max_len[$target]:-} ]] && options+=(-max_len="${max_len[$target]}")
-  mkdir -p "$out/corpus/$target" "$out/findings/$target"
+  local kept=$out/corpus/$target
+  if ((quick)); then
+    kept=$out/quick-corpus/$target
+    rm -rf "$kept"
+  fi
+  mkdir -p "$kept" "$out/findings/$target"
   UBSAN_OPTIONS=print_stacktrace=1 "$out/tests/fuzz/fuzz_$target" "${options[@]}" \
-    "$out/corpus/$target" "tests/fuzz/corpus/$target" >"$out/findings/$target.log" 2>&1
+    "$kept" "tests/fuzz/corpus/$target" >"$out/findings/$target.log" 2>&1
 }
 
 # Replays the reproducers of fixed findings (tests/fuzz/regressions/TARGET) under the sanitizers.
@@ -90,7 +97,7 @@ report() {
   grep -hE '^SUMMARY: |runtime error: |ERROR: libFuzzer: |terminate called' "$log" | sed 's/^/      /' | sort | uniq -c | head -20
   printf '      %s\n' "${found[@]:0:10}"
   known=$(find "tests/fuzz/known/$target" -type f 2>/dev/null | wc -l)
-  if ((allow_known && known > 0)); then
+  if ((quick && known > 0)); then
     echo "      (tests/fuzz/known/$target holds $known reproducers of findings still open: not failing the run)"
     return 0
   fi
