@@ -19,7 +19,8 @@ namespace fuzz {
 namespace scene_text { void fuzzOne(const uint8_t* data, size_t size); }
 
 // A glTF model, .gltf text or .glb bytes, imported as `walkrad render model.gltf` does. It is
-// named as a file in an empty folder of its own, so external URIs find nothing.
+// named as a file in an empty folder of its own, so a relative URI finds nothing beside it (and
+// the loader refuses URIs that leave the model's folder once file access is confined).
 namespace gltf { void fuzzOne(const uint8_t* data, size_t size); }
 
 // A polygon case (`walkrad mesh case.json`): parsed and validated.
