@@ -389,8 +389,8 @@ std::map<EdgeKey, OddEdge> oddEdges(const std::map<EdgeKey, EdgeUse>& edges, con
   for (const auto& [key, use] : odd) {
     const Vec3 a = ids.position(key.first), b = ids.position(key.second), d = b - a;
     cuts.clear();
-    const auto consider = [&](uint32_t v) {
-      if (v == key.first || v == key.second) return;
+    const auto consider = [&, ends = key](uint32_t v) {
+      if (v == ends.first || v == ends.second) return;
       const Vec3 p = ids.position(v);
       const double t = glm::dot(p - a, d) / glm::dot(d, d);
       if (t > 0 && t < 1 && glm::length(a + t * d - p) <= tolerance) cuts.push_back({t, v});

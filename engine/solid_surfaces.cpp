@@ -210,7 +210,7 @@ void appendSolidSurfaces(const Scene& scene, uint32_t objectIndex, const Solid& 
   const std::vector<SolidFace> faces = sweepSolid(solid);
   for (const auto& [name, override] : solid.faces) {
     const bool exists = std::any_of(faces.begin(), faces.end(),
-                                    [&](const SolidFace& f) { return f.name == name; });
+                                    [&face = name](const SolidFace& f) { return f.name == face; });
     if (!exists) throw SceneError(Diag::UnknownFace, scene.file, facePath(solid, name));
   }
 

@@ -491,7 +491,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       // left the box's face 15% too dark.
       const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
       const bool behind = glm::dot(normal[j], eye) <= offset[j];
-      const Judged& k = out.judged.emplace_back(j, behind ? Judged::kNearBehind : Judged::kNear, v);
+      const Judged& k = out.judged.emplace_back(Judged{j, behind ? Judged::kNearBehind : Judged::kNear, v});
       if (k.integrated())
         planPatchToReceiver(trees[p], elementsOf(p), receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
                             settings.pieceRatio, settings.maxShooterSplits, out.plans);
