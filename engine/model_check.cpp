@@ -8,13 +8,12 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
-#include <iomanip>
 #include <map>
 #include <numeric>
 #include <set>
 #include <span>
-#include <sstream>
 #include <tuple>
 #include <unordered_map>
 
@@ -54,12 +53,23 @@ const char* nameOf(Severity severity) {
   return "?";
 }
 
+namespace {
+
+// `value` to `digits` significant digits, as a stream prints it (%g): without a stream, whose
+// set-up costs more than the printing when a model has thousands of findings, nor printf, whose
+// exact digits of numbers far from 1 cost thousands of instructions (to_chars gives the same).
+std::string number(double value, int digits = 4) {
+  char text[32];
+  const auto printed = std::to_chars(text, text + sizeof text, value, std::chars_format::general, digits);
+  return std::string(text, printed.ptr);
+}
+
+}  // namespace
+
 std::string describeLocation(const Scene& scene, const Finding& finding) {
   const Surface& s = scene.surfaces[finding.surface];
-  std::ostringstream out;
-  out << std::setprecision(6) << s.jsonPath << " (" << scene.objects[s.object].name << ", " << s.face << ") at ("
-      << finding.point.x << ", " << finding.point.y << ", " << finding.point.z << ")";
-  return out.str();
+  return s.jsonPath + " (" + scene.objects[s.object].name + ", " + s.face + ") at (" + number(finding.point.x, 6) + ", " +
+         number(finding.point.y, 6) + ", " + number(finding.point.z, 6) + ")";
 }
 
 namespace {
@@ -69,12 +79,6 @@ using Triangle = std::array<Vec3, 3>;
 std::string faceName(const Scene& scene, uint32_t surface) {
   const Surface& s = scene.surfaces[surface];
   return "\"" + scene.objects[s.object].name + "\" " + s.face + " (" + s.jsonPath + ")";
-}
-
-std::string number(double value) {
-  std::ostringstream out;
-  out << std::setprecision(4) << value;
-  return out.str();
 }
 
 // ---- the box tree ----
