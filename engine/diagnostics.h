@@ -44,7 +44,8 @@ namespace engine {
   X(WrongByteLength, "glTF buffer's data is not byteLength bytes long")               \
   X(NoTriangles, "the model has no triangles")                                        \
   X(UnknownNode, "no top-level node of that name in the model")                       \
-  X(GltfOnly, "this option applies to glTF models only")
+  X(GltfOnly, "this option applies to glTF models only")                              \
+  X(TooManyFaces, "the model makes more faces than walkrad takes (4,000,000)")
 
 enum class Diag {
 #define WALKRAD_DIAG_ID(id, text) id,

@@ -381,6 +381,10 @@ class GltfImporter {
         indices.reserve(points.size());
         for (size_t i = 0; i < points.size(); ++i) indices.push_back(static_cast<uint32_t>(i));
       }
+      // A mesh may be placed by any number of nodes and list one accessor in any number of
+      // primitives: the count is checked before the triangles are made.
+      const size_t made = mode == TINYGLTF_MODE_TRIANGLES ? indices.size() / 3 : (indices.size() < 3 ? 0 : indices.size() - 2);
+      checkFaceCount(triangles_.size() + made * (twoSided_[material] ? 2 : 1), file_, place);
       auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
         if (mirrored) std::swap(b, c);
         triangles_.push_back({{points[a], points[b], points[c]}, material, object});

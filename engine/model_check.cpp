@@ -1,5 +1,5 @@
-// Sections: table | faces prepared (planes, triangles, bounds) | the grid | coplanar pairs |
-// crossing pairs | edges of objects | backs seen | checkModel.
+// Sections: table | the box tree | faces prepared (planes, triangles, bounds) | coplanar pairs |
+// crossing pairs | a pair of faces | edges of objects | backs seen | checkModel.
 #include "engine/model_check.h"
 
 #include "mesher/triangulate.h"
@@ -8,13 +8,12 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
-#include <iomanip>
 #include <map>
 #include <numeric>
 #include <set>
 #include <span>
-#include <sstream>
 #include <tuple>
 #include <unordered_map>
 
@@ -54,12 +53,23 @@ const char* nameOf(Severity severity) {
   return "?";
 }
 
+namespace {
+
+// `value` to `digits` significant digits, as a stream prints it (%g): without a stream, whose
+// set-up costs more than the printing when a model has thousands of findings, nor printf, whose
+// exact digits of numbers far from 1 cost thousands of instructions (to_chars gives the same).
+std::string number(double value, int digits = 4) {
+  char text[32];
+  const auto printed = std::to_chars(text, text + sizeof text, value, std::chars_format::general, digits);
+  return std::string(text, printed.ptr);
+}
+
+}  // namespace
+
 std::string describeLocation(const Scene& scene, const Finding& finding) {
   const Surface& s = scene.surfaces[finding.surface];
-  std::ostringstream out;
-  out << std::setprecision(6) << s.jsonPath << " (" << scene.objects[s.object].name << ", " << s.face << ") at ("
-      << finding.point.x << ", " << finding.point.y << ", " << finding.point.z << ")";
-  return out.str();
+  return s.jsonPath + " (" + scene.objects[s.object].name + ", " + s.face + ") at (" + number(finding.point.x, 6) + ", " +
+         number(finding.point.y, 6) + ", " + number(finding.point.z, 6) + ")";
 }
 
 namespace {
@@ -71,11 +81,154 @@ std::string faceName(const Scene& scene, uint32_t surface) {
   return "\"" + scene.objects[s.object].name + "\" " + s.face + " (" + s.jsonPath + ")";
 }
 
-std::string number(double value) {
-  std::ostringstream out;
-  out << std::setprecision(4) << value;
-  return out.str();
+// ---- the box tree ----
+
+struct Box {
+  Vec3 lo{INFINITY}, hi{-INFINITY};
+  void add(const Box& b) {
+    lo = glm::min(lo, b.lo);
+    hi = glm::max(hi, b.hi);
+  }
+};
+
+// Closed boxes: touching counts.
+bool overlaps(const Box& a, const Box& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
+         b.lo.z <= a.hi.z;
 }
+
+// Where the ray origin + t direction enters `box` for t in [from, to], or infinity for a miss.
+// `inverse` is 1 / direction, per coordinate.
+double rayEntry(const Box& box, const Vec3& origin, const Vec3& direction, const Vec3& inverse, double from, double to) {
+  for (int k = 0; k < 3; ++k) {
+    if (direction[k] == 0) {
+      if (origin[k] < box.lo[k] || origin[k] > box.hi[k]) return INFINITY;
+      continue;
+    }
+    double near = (box.lo[k] - origin[k]) * inverse[k], far = (box.hi[k] - origin[k]) * inverse[k];
+    if (near > far) std::swap(near, far);
+    from = std::max(from, near);
+    to = std::min(to, far);
+  }
+  return from <= to ? from : INFINITY;
+}
+
+// A bounding volume hierarchy over boxes (faces for pairs, triangles for rays): each node halves
+// its boxes at the median of their centres along their widest spread, down to kLeafSize a leaf,
+// so it is balanced however the boxes lie. A query visits the nodes whose bounds it meets: its
+// work follows the boxes near it, not how the rest of the scene is spread (a uniform grid over
+// the scene crams a small dense part, a dome beside a distant box, into a few cells).
+class BoxTree {
+ public:
+  // The tree over `items`, which index `boxes`.
+  BoxTree(const std::vector<Box>& boxes, std::vector<uint32_t> items) : items_(std::move(items)) {
+    if (items_.empty()) return;
+    nodes_.reserve(2 * items_.size());
+    nodes_.emplace_back();
+    build(boxes, 0, 0, static_cast<uint32_t>(items_.size()));
+    boxes_.reserve(items_.size());
+    for (uint32_t item : items_) boxes_.push_back(boxes[item]);
+  }
+
+  // Calls visit(item) for each item whose box overlaps `box`; counts the boxes compared.
+  template <class Visit>
+  void overlapping(const Box& box, uint64_t& tests, Visit visit) const {
+    std::array<uint32_t, kDeepest> stack;
+    size_t top = 0;
+    if (!nodes_.empty()) stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[stack[--top]];
+      ++tests;
+      if (!overlaps(node.box, box)) continue;
+      if (node.count == 0) {
+        stack[top++] = node.first;
+        stack[top++] = node.first + 1;
+        continue;
+      }
+      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+        ++tests;
+        if (overlaps(boxes_[i], box)) visit(items_[i]);
+      }
+    }
+  }
+
+  // Calls visit(item) for each item whose box the ray origin + t direction meets for t in
+  // [from, to], nearer nodes first. `visit` may lower `to` (it found a hit there), which leaves
+  // out what lies beyond. Counts the boxes tested.
+  template <class Visit>
+  void alongRay(const Vec3& origin, const Vec3& direction, double from, double& to, uint64_t& tests, Visit visit) const {
+    const Vec3 inverse = 1.0 / direction;
+    std::array<std::pair<uint32_t, double>, kDeepest> stack;  // nodes and where the ray enters them
+    size_t top = 0;
+    if (!nodes_.empty()) {
+      ++tests;
+      const double entry = rayEntry(nodes_[0].box, origin, direction, inverse, from, to);
+      if (entry != INFINITY) stack[top++] = {0, entry};
+    }
+    while (top > 0) {
+      const auto [index, entry] = stack[--top];
+      if (entry > to) continue;
+      const Node& node = nodes_[index];
+      if (node.count > 0) {
+        for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+          ++tests;
+          visit(items_[i]);
+        }
+        continue;
+      }
+      tests += 2;
+      double entries[2];
+      for (uint32_t c = 0; c < 2; ++c) entries[c] = rayEntry(nodes_[node.first + c].box, origin, direction, inverse, from, to);
+      const uint32_t nearer = entries[1] < entries[0] ? 1 : 0;
+      for (uint32_t c : {1 - nearer, nearer})  // the nearer on top
+        if (entries[c] != INFINITY) stack[top++] = {node.first + c, entries[c]};
+    }
+  }
+
+ private:
+  static constexpr uint32_t kLeafSize = 4;
+  // Median splits make the tree at most 32 levels deep for 2^32 items; a walk keeps at most one
+  // node a level waiting, and two at the deepest.
+  static constexpr size_t kDeepest = 66;
+
+  struct Node {
+    Box box;
+    uint32_t first = 0;  // a leaf's first item, or an inner node's first child (the second follows)
+    uint32_t count = 0;  // a leaf's items; 0 for an inner node
+  };
+
+  void build(const std::vector<Box>& boxes, uint32_t index, uint32_t first, uint32_t count) {
+    Box bounds, centres;
+    for (uint32_t i = first; i < first + count; ++i) {
+      const Box& b = boxes[items_[i]];
+      bounds.add(b);
+      centres.add({b.lo + b.hi, b.lo + b.hi});
+    }
+    nodes_[index].box = bounds;
+    if (count <= kLeafSize) {
+      nodes_[index].first = first;
+      nodes_[index].count = count;
+      return;
+    }
+    const Vec3 spread = centres.hi - centres.lo;
+    const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+    const uint32_t half = count / 2;
+    const auto begin = items_.begin() + first;
+    std::nth_element(begin, begin + half, begin + count, [&](uint32_t a, uint32_t b) {
+      return boxes[a].lo[axis] + boxes[a].hi[axis] < boxes[b].lo[axis] + boxes[b].hi[axis];
+    });
+    const auto children = static_cast<uint32_t>(nodes_.size());
+    nodes_[index].first = children;
+    nodes_.emplace_back();
+    nodes_.emplace_back();
+    build(boxes, children, first, half);
+    build(boxes, children + 1, first + half, count - half);
+  }
+
+  std::vector<uint32_t> items_;  // in the order of the leaves
+  std::vector<Box> boxes_;       // by position in items_
+  std::vector<Node> nodes_;      // the root first
+};
 
 // ---- faces prepared (planes, triangles, bounds) ----
 
@@ -94,7 +247,7 @@ struct Face {
   Vec3 normal{0};
   double offset = 0;            // the plane is dot(normal, p) = offset
   double area = 0;
-  Vec3 lo{0}, hi{0};            // bounds, padded by the tolerance
+  Box bounds;                   // padded by the tolerance
   uint32_t firstTriangle = 0, triangleCount = 0;
   Vec3 inside{0};               // a point strictly inside the face (its largest triangle's centroid)
 };
@@ -121,13 +274,7 @@ void prepareFace(const Surface& s, double tolerance, Face& face, std::vector<Tri
   if (face.degenerate) return;
   face.normal = glm::normalize(n);
   face.offset = glm::dot(face.normal, s.outer.front());
-  face.lo = face.hi = s.outer.front();
-  for (const Vec3& p : s.outer) {
-    face.lo = glm::min(face.lo, p);
-    face.hi = glm::max(face.hi, p);
-  }
-  face.lo -= Vec3(tolerance);
-  face.hi += Vec3(tolerance);
+  for (const Vec3& p : s.outer) face.bounds.add({p - Vec3(tolerance), p + Vec3(tolerance)});
 
   // Tiled by ear clipping in the projection along the normal's largest coordinate.
   const int axis = dominantAxis(face.normal);
@@ -153,53 +300,6 @@ void prepareFace(const Surface& s, double tolerance, Face& face, std::vector<Tri
   face.triangleCount = static_cast<uint32_t>(triangles.size()) - face.firstTriangle;
   face.degenerate = face.triangleCount == 0;
 }
-
-// ---- the grid ----
-
-// A uniform grid over the faces' bounds; each cell lists the faces whose bounds reach into it
-// (compressed rows: cellStart_[c] .. cellStart_[c + 1] in faces_).
-class FaceGrid {
- public:
-  FaceGrid(const std::vector<Face>& faces, double cellSize, Vec3 lo, Vec3 hi) : lo_(lo), cell_(cellSize) {
-    for (int k = 0; k < 3; ++k) size_[k] = std::max(1, static_cast<int>(std::ceil((hi[k] - lo[k]) / cell_)));
-    cellStart_.assign(static_cast<size_t>(size_[0]) * size_[1] * size_[2] + 1, 0);
-    forEachCell(faces, [&](uint32_t, size_t c) { ++cellStart_[c + 1]; });
-    std::partial_sum(cellStart_.begin(), cellStart_.end(), cellStart_.begin());
-    faces_.resize(cellStart_.back());
-    std::vector<uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-    forEachCell(faces, [&](uint32_t f, size_t c) { faces_[fill[c]++] = f; });
-  }
-
-  glm::ivec3 cellOf(const Vec3& p) const {
-    glm::ivec3 c;
-    for (int k = 0; k < 3; ++k) c[k] = std::clamp(static_cast<int>(std::floor((p[k] - lo_[k]) / cell_)), 0, size_[k] - 1);
-    return c;
-  }
-  size_t index(glm::ivec3 c) const { return (static_cast<size_t>(c.z) * size_[1] + c.y) * size_[0] + c.x; }
-  size_t cellCount() const { return cellStart_.size() - 1; }
-  const uint32_t* begin(size_t c) const { return faces_.data() + cellStart_[c]; }
-  const uint32_t* end(size_t c) const { return faces_.data() + cellStart_[c + 1]; }
-  glm::ivec3 size() const { return size_; }
-  Vec3 lo() const { return lo_; }
-  double cell() const { return cell_; }
-
- private:
-  template <typename Visit>
-  void forEachCell(const std::vector<Face>& faces, Visit visit) const {
-    for (uint32_t f = 0; f < faces.size(); ++f) {
-      if (faces[f].degenerate) continue;
-      const glm::ivec3 a = cellOf(faces[f].lo), b = cellOf(faces[f].hi);
-      for (int z = a.z; z <= b.z; ++z)
-        for (int y = a.y; y <= b.y; ++y)
-          for (int x = a.x; x <= b.x; ++x) visit(f, index({x, y, z}));
-    }
-  }
-
-  Vec3 lo_;
-  double cell_;
-  glm::ivec3 size_{1};
-  std::vector<uint32_t> cellStart_, faces_;
-};
 
 // ---- coplanar pairs ----
 
@@ -310,6 +410,50 @@ double sharedStretch(const std::vector<double>& a, const std::vector<double>& b,
   return best;
 }
 
+// ---- a pair of faces ----
+
+// Faces a < b whose bounds overlap: coplanar ones overlapping (duplicates, coincident, back to
+// back), or crossing ones (each has points strictly on both sides of the other's plane, and the
+// chords the two planes cut from them share a stretch).
+void checkPair(const Scene& scene, const std::vector<Face>& faces, const std::vector<Triangle>& triangles, uint32_t a,
+               uint32_t b, double tolerance, std::vector<Finding>& out) {
+  const Face &fa = faces[a], &fb = faces[b];
+  const Surface &sa = scene.surfaces[a], &sb = scene.surfaces[b];
+
+  const double facing = glm::dot(fa.normal, fb.normal);
+  if (std::abs(facing) > 0.99 && onPlane(sb, fa, tolerance) && onPlane(sa, fb, tolerance)) {
+    const Overlap overlap = coplanarOverlap(fa, fb, triangles, dominantAxis(fa.normal));
+    if (overlap.shared <= 1e-6 * std::min(overlap.a, overlap.b) + tolerance * tolerance) return;
+    const Vec3 point = fb.inside;
+    const std::string share = number(100 * overlap.shared / overlap.b) + "% of it";
+    if (facing > 0) {
+      const bool same = overlap.shared >= (1 - 1e-6) * std::max(overlap.a, overlap.b);
+      if (same)
+        out.push_back({FindingKind::DuplicateFace, b, a, point, "the same polygon as " + faceName(scene, a)});
+      else
+        out.push_back({FindingKind::CoincidentFaces, b, a, point, share + " lies on " + faceName(scene, a) + ", facing the same way"});
+    } else if (sa.object == sb.object) {
+      // Between objects this is one resting on the other: contact cut-outs handle it.
+      out.push_back({FindingKind::BackToBackFaces, b, a, point, share + " lies on " + faceName(scene, a) + ", back to back"});
+    }
+    return;
+  }
+
+  const Vec3 u = glm::cross(fa.normal, fb.normal);
+  if (glm::length(u) < 1e-9) return;  // parallel planes apart
+  const Vec3 along = glm::normalize(u);
+  const std::vector<double> ca = crossings(sa, fb.normal, fb.offset, along, tolerance);
+  if (ca.empty()) return;
+  const std::vector<double> cb = crossings(sb, fa.normal, fa.offset, along, tolerance);
+  if (cb.empty()) return;
+  double middle = 0;
+  const double stretch = sharedStretch(ca, cb, middle);
+  if (stretch <= tolerance) return;
+  // The point of the line of the two planes at parameter `middle`.
+  const Vec3 onLine = (fa.offset * glm::cross(fb.normal, u) + fb.offset * glm::cross(u, fa.normal)) / glm::dot(u, u);
+  out.push_back({FindingKind::Interpenetration, a, b, onLine + middle * along, "crosses " + faceName(scene, b) + " along " + number(stretch)});
+}
+
 // ---- edges of objects ----
 
 struct EdgeUse {
@@ -359,7 +503,8 @@ struct OddEdge {
 // number of times, split where a vertex of another such edge lies on them, so that an edge of
 // one face running along the edges of two others (a T-junction) is not taken for open. Only
 // odd edges are split: an edge used once each way is closed however its neighbours run.
-std::map<EdgeKey, OddEdge> oddEdges(const std::map<EdgeKey, EdgeUse>& edges, const VertexIds& ids, double tolerance) {
+std::map<EdgeKey, OddEdge> oddEdges(const std::map<EdgeKey, EdgeUse>& edges, const VertexIds& ids, double tolerance,
+                                    ModelCheckWork& work) {
   std::vector<std::pair<EdgeKey, const EdgeUse*>> odd;
   std::vector<uint32_t> candidates;
   for (const auto& [key, use] : edges)
@@ -371,42 +516,26 @@ std::map<EdgeKey, OddEdge> oddEdges(const std::map<EdgeKey, EdgeUse>& edges, con
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
 
-  // Candidates in a hashed grid of cells about the typical odd edge's length.
-  std::vector<double> lengths;
-  for (const auto& [key, use] : odd) lengths.push_back(use->length);
   std::map<EdgeKey, OddEdge> out;
   if (odd.empty()) return out;
-  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
-  const double cell = std::max(lengths[lengths.size() / 2], 4 * tolerance);
-  const auto cellOf = [&](const Vec3& p) {
-    return std::array<int64_t, 3>{static_cast<int64_t>(std::floor(p.x / cell)), static_cast<int64_t>(std::floor(p.y / cell)),
-                                  static_cast<int64_t>(std::floor(p.z / cell))};
-  };
-  std::map<std::array<int64_t, 3>, std::vector<uint32_t>> grid;
-  for (uint32_t v : candidates) grid[cellOf(ids.position(v))].push_back(v);
+  std::vector<Box> points(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i) points[i] = {ids.position(candidates[i]), ids.position(candidates[i])};
+  std::vector<uint32_t> items(candidates.size());
+  std::iota(items.begin(), items.end(), 0);
+  const BoxTree tree(points, std::move(items));
 
   std::vector<std::pair<double, uint32_t>> cuts;
   for (const auto& [key, use] : odd) {
     const Vec3 a = ids.position(key.first), b = ids.position(key.second), d = b - a;
     cuts.clear();
-    const auto consider = [&, ends = key](uint32_t v) {
+    const Box reach{glm::min(a, b) - Vec3(tolerance), glm::max(a, b) + Vec3(tolerance)};
+    tree.overlapping(reach, work.edgeBoundsTests, [&, ends = key](uint32_t i) {
+      const uint32_t v = candidates[i];
       if (v == ends.first || v == ends.second) return;
       const Vec3 p = ids.position(v);
       const double t = glm::dot(p - a, d) / glm::dot(d, d);
       if (t > 0 && t < 1 && glm::length(a + t * d - p) <= tolerance) cuts.push_back({t, v});
-    };
-    const auto lo = cellOf(glm::min(a, b) - Vec3(tolerance)), hi = cellOf(glm::max(a, b) + Vec3(tolerance));
-    const double cells = static_cast<double>(hi[0] - lo[0] + 1) * static_cast<double>(hi[1] - lo[1] + 1) *
-                         static_cast<double>(hi[2] - lo[2] + 1);
-    if (cells > static_cast<double>(candidates.size())) {
-      for (uint32_t v : candidates) consider(v);  // a long edge: every candidate is cheaper
-    } else {
-      for (int64_t x = lo[0]; x <= hi[0]; ++x)
-        for (int64_t y = lo[1]; y <= hi[1]; ++y)
-          for (int64_t z = lo[2]; z <= hi[2]; ++z)
-            if (const auto found = grid.find({x, y, z}); found != grid.end())
-              for (uint32_t v : found->second) consider(v);
-    }
+    });
     std::sort(cuts.begin(), cuts.end());
     uint32_t from = key.first;
     cuts.push_back({1, key.second});
@@ -433,7 +562,7 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t v) {
 // Finds inconsistent orientation and the openings of solids; returns per object whether it is
 // sealed: every edge used as often one way as the other (closed, consistently oriented shells).
 std::vector<bool> checkEdges(const Scene& scene, const std::vector<Face>& faces, double tolerance, double closedShare,
-                             std::vector<Finding>& out) {
+                             ModelCheckWork& work, std::vector<Finding>& out) {
   VertexIds ids(tolerance);
   // Per object, its edges by (lower id, higher id).
   std::vector<std::map<EdgeKey, EdgeUse>> edges(scene.objects.size());
@@ -477,7 +606,7 @@ std::vector<bool> checkEdges(const Scene& scene, const std::vector<Face>& faces,
     }
     // A solid (most of its edges closed) with open edges: gather them into openings (connected
     // runs of open edges).
-    const std::map<EdgeKey, OddEdge> open = oddEdges(edges[o], ids, tolerance);
+    const std::map<EdgeKey, OddEdge> open = oddEdges(edges[o], ids, tolerance, work);
     double openLength = 0;
     for (const auto& [key, piece] : open) openLength += piece.length;
     const double closed = total > 0 ? 1 - openLength / total : 0;
@@ -531,63 +660,56 @@ double rayHit(const Vec3& origin, const Vec3& direction, const Triangle& t) {
   return glm::dot(e2, q) / det;
 }
 
-// The nearest face met by the ray (walking the grid cell by cell, Amanatides-Woo), skipping
-// `self` and fronts at the start (coincident faces, reported as such). Returns the face and its
-// distance, or a negative face for none.
-std::pair<int64_t, double> castRay(const FaceGrid& grid, const std::vector<Face>& faces,
-                                   const std::vector<Triangle>& triangles, uint32_t self, const Vec3& origin,
-                                   const Vec3& direction, double tolerance, std::vector<uint32_t>& stamp, uint32_t ray) {
-  glm::ivec3 cell = grid.cellOf(origin);
-  glm::ivec3 step;
-  Vec3 next, delta;
-  for (int k = 0; k < 3; ++k) {
-    step[k] = direction[k] > 0 ? 1 : -1;
-    const double boundary = grid.lo()[k] + (cell[k] + (direction[k] > 0 ? 1 : 0)) * grid.cell();
-    next[k] = direction[k] != 0 ? (boundary - origin[k]) / direction[k] : INFINITY;
-    delta[k] = direction[k] != 0 ? grid.cell() / std::abs(direction[k]) : INFINITY;
-  }
-  int64_t best = -1;
-  double bestT = INFINITY;
-  bool bestFront = false;
-  for (;;) {
-    const size_t c = grid.index(cell);
-    for (const uint32_t* f = grid.begin(c); f != grid.end(c); ++f) {
-      if (*f == self || stamp[*f] == ray) continue;
-      stamp[*f] = ray;
-      const Face& face = faces[*f];
-      // The face's plane first: most faces in a cell lie behind the start or beyond the best.
-      const double facing = glm::dot(face.normal, direction);
-      if (facing == 0) continue;
-      const double plane = (face.offset - glm::dot(face.normal, origin)) / facing;
-      if (plane < -tolerance || plane > bestT + tolerance) continue;
-      for (uint32_t t = face.firstTriangle; t < face.firstTriangle + face.triangleCount; ++t) {
-        const double hit = rayHit(origin, direction, triangles[t]);
-        if (hit < -tolerance || hit > bestT + tolerance) continue;
-        const bool front = glm::dot(face.normal, direction) < 0;
-        if (hit <= tolerance && front) continue;
-        // Faces at the same place (one solid resting on another) tie: a back there covers.
-        const bool tie = hit >= bestT - tolerance;
-        if (tie && (front || !bestFront)) continue;
-        best = *f;
-        bestT = hit;
-        bestFront = front;
-      }
+// A face a ray met: its distance along the ray and whether the ray sees its front.
+struct RayHit {
+  uint32_t face;
+  double distance;
+  bool front;
+};
+
+// The face the ray sees first, skipping `self` and fronts at the start (coincident faces,
+// reported as such), and its distance; a negative face for none. Faces within the tolerance of
+// the nearest are at one place (a solid resting on another): a back there covers, then the
+// face first in the file is taken, so the answer does not depend on the order of the search.
+std::pair<int64_t, double> castRay(const BoxTree& tree, const std::vector<Face>& faces, const std::vector<Triangle>& triangles,
+                                   const std::vector<uint32_t>& faceOfTriangle, uint32_t self, const Vec3& origin,
+                                   const Vec3& direction, double tolerance, std::vector<RayHit>& hits, ModelCheckWork& work) {
+  hits.clear();
+  double nearest = INFINITY, reach = INFINITY;  // the nearest hit and the tolerance beyond it
+  tree.alongRay(origin, direction, -tolerance, reach, work.rayBoundsTests, [&](uint32_t t) {
+    const uint32_t f = faceOfTriangle[t];
+    if (f == self) return;
+    const Face& face = faces[f];
+    // The face's plane first: most faces met lie behind the start or beyond the nearest.
+    const double facing = glm::dot(face.normal, direction);
+    if (facing == 0) return;
+    const double plane = (face.offset - glm::dot(face.normal, origin)) / facing;
+    if (plane < -tolerance || plane > reach) return;
+    const double hit = rayHit(origin, direction, triangles[t]);
+    if (hit < -tolerance || hit > reach) return;
+    const bool front = facing < 0;
+    if (hit <= tolerance && front) return;
+    hits.push_back({f, hit, front});
+    if (hit < nearest) {
+      nearest = hit;
+      reach = hit + tolerance;
     }
-    const int k = next.x < next.y ? (next.x < next.z ? 0 : 2) : (next.y < next.z ? 1 : 2);
-    if (bestT + tolerance < next[k]) break;  // nothing nearer lies in cells further on
-    cell[k] += step[k];
-    if (cell[k] < 0 || cell[k] >= grid.size()[k]) break;
-    next[k] += delta[k];
-  }
-  return {best, bestT};
+  });
+  const RayHit* seen = nullptr;
+  for (const RayHit& hit : hits)
+    if (hit.distance <= reach &&
+        (!seen || std::tie(hit.front, hit.face, hit.distance) < std::tie(seen->front, seen->face, seen->distance)))
+      seen = &hit;
+  return seen ? std::pair<int64_t, double>{seen->face, seen->distance} : std::pair<int64_t, double>{-1, INFINITY};
 }
 
 }  // namespace
 
 // ---- checkModel ----
 
-std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& settings) {
+std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& settings, ModelCheckWork* counted) {
   std::vector<Finding> out;
+  ModelCheckWork work;
   const size_t n = scene.surfaces.size();
   if (n == 0) return out;
 
@@ -602,89 +724,52 @@ std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& se
   const double tolerance = settings.tolerance > 0 ? settings.tolerance : 1e-6 * extent;
   std::vector<Face> faces(n);
   std::vector<Triangle> triangles;
+  std::vector<uint32_t> kept;  // the faces with area
   for (uint32_t f = 0; f < n; ++f) {
     prepareFace(scene.surfaces[f], tolerance, faces[f], triangles);
-    if (faces[f].degenerate) {
-      const Ring3& ring = scene.surfaces[f].outer;
-      out.push_back({FindingKind::DegenerateFace, f, -1, ring.empty() ? Vec3(0) : ring.front(),
-                     "area " + number(faces[f].area) + ": its points lie on a line or on one point"});
+    if (!faces[f].degenerate) {
+      kept.push_back(f);
+      continue;
     }
+    const Ring3& ring = scene.surfaces[f].outer;
+    out.push_back({FindingKind::DegenerateFace, f, -1, ring.empty() ? Vec3(0) : ring.front(),
+                   "area " + number(faces[f].area) + ": its points lie on a line or on one point"});
   }
 
-  // The grid: cells about twice the typical face, at most 128 along the scene.
-  std::vector<double> sizes;
-  for (const Face& f : faces)
-    if (!f.degenerate) {
-      const Vec3 d = f.hi - f.lo;
-      sizes.push_back(std::max({d.x, d.y, d.z}));
-    }
-  if (sizes.empty()) return out;
-  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
-  const double cell = std::max({2 * sizes[sizes.size() / 2], extent / 128, tolerance});
-  const FaceGrid grid(faces, cell, lo - Vec3(2 * tolerance), hi + Vec3(2 * tolerance));
-
-  // Pairs of faces whose bounds overlap, each met once: in the cell holding the low corner of
-  // their bounds' overlap.
-  for (size_t c = 0; c < grid.cellCount(); ++c)
-    for (const uint32_t* i = grid.begin(c); i != grid.end(c); ++i)
-      for (const uint32_t* j = i + 1; j != grid.end(c); ++j) {
-        const uint32_t a = std::min(*i, *j), b = std::max(*i, *j);
-        const Face &fa = faces[a], &fb = faces[b];
-        const Vec3 overlapLo = glm::max(fa.lo, fb.lo), overlapHi = glm::min(fa.hi, fb.hi);
-        if (overlapLo.x > overlapHi.x || overlapLo.y > overlapHi.y || overlapLo.z > overlapHi.z) continue;
-        if (grid.index(grid.cellOf(overlapLo)) != c) continue;
-        const Surface &sa = scene.surfaces[a], &sb = scene.surfaces[b];
-
-        // Coplanar pairs: duplicates, coincident (same way), back to back (opposite).
-        const double facing = glm::dot(fa.normal, fb.normal);
-        if (std::abs(facing) > 0.99 && onPlane(sb, fa, tolerance) && onPlane(sa, fb, tolerance)) {
-          const Overlap overlap = coplanarOverlap(fa, fb, triangles, dominantAxis(fa.normal));
-          if (overlap.shared <= 1e-6 * std::min(overlap.a, overlap.b) + tolerance * tolerance) continue;
-          const Vec3 point = fb.inside;
-          const std::string share = number(100 * overlap.shared / overlap.b) + "% of it";
-          if (facing > 0) {
-            const bool same = overlap.shared >= (1 - 1e-6) * std::max(overlap.a, overlap.b);
-            if (same)
-              out.push_back({FindingKind::DuplicateFace, b, a, point, "the same polygon as " + faceName(scene, a)});
-            else
-              out.push_back({FindingKind::CoincidentFaces, b, a, point,
-                             share + " lies on " + faceName(scene, a) + ", facing the same way"});
-          } else if (sa.object == sb.object) {
-            // Between objects this is one resting on the other: contact cut-outs handle it.
-            out.push_back({FindingKind::BackToBackFaces, b, a, point, share + " lies on " + faceName(scene, a) + ", back to back"});
-          }
-          continue;
-        }
-
-        // Crossing pairs: each has points strictly on both sides of the other's plane, and the
-        // chords the two planes cut from them share a stretch.
-        const Vec3 u = glm::cross(fa.normal, fb.normal);
-        if (glm::length(u) < 1e-9) continue;  // parallel planes apart
-        const Vec3 along = glm::normalize(u);
-        const std::vector<double> ca = crossings(sa, fb.normal, fb.offset, along, tolerance);
-        if (ca.empty()) continue;
-        const std::vector<double> cb = crossings(sb, fa.normal, fa.offset, along, tolerance);
-        if (cb.empty()) continue;
-        double middle = 0;
-        const double stretch = sharedStretch(ca, cb, middle);
-        if (stretch <= tolerance) continue;
-        // The point of the line of the two planes at parameter `middle`.
-        const Vec3 onLine = (fa.offset * glm::cross(fb.normal, u) + fb.offset * glm::cross(u, fa.normal)) / glm::dot(u, u);
-        out.push_back({FindingKind::Interpenetration, a, b, onLine + middle * along,
-                       "crosses " + faceName(scene, b) + " along " + number(stretch)});
-      }
+  // Pairs of faces whose bounds overlap, each from its first face, in the file's order.
+  std::vector<Box> bounds(n);
+  for (uint32_t f : kept) bounds[f] = faces[f].bounds;
+  const BoxTree faceTree(bounds, kept);
+  std::vector<uint32_t> partners;
+  for (uint32_t a : kept) {
+    partners.clear();
+    faceTree.overlapping(bounds[a], work.pairBoundsTests, [&](uint32_t b) {
+      if (b > a) partners.push_back(b);
+    });
+    std::sort(partners.begin(), partners.end());
+    work.pairsChecked += partners.size();
+    for (uint32_t b : partners) checkPair(scene, faces, triangles, a, b, tolerance, out);
+  }
 
   // Edges of objects: orientation and openings.
-  const std::vector<bool> sealed = checkEdges(scene, faces, tolerance, settings.closedShare, out);
+  const std::vector<bool> sealed = checkEdges(scene, faces, tolerance, settings.closedShare, work, out);
 
   // Backs seen: from a point inside each face, straight back and, but for sealed objects, 45
   // degrees off it four ways, the first face met shows its front. A sealed object's backs face
   // its inside, seen only from something in there, which the straight ray meets; the slanted
   // rays look out through openings (an open crate's sides are seen past its rim).
-  std::vector<uint32_t> stamp(n, 0);
-  uint32_t ray = 0;
-  for (uint32_t f = 0; f < n; ++f) {
-    if (faces[f].degenerate) continue;
+  std::vector<Box> triangleBounds(triangles.size());
+  std::vector<uint32_t> faceOfTriangle(triangles.size());
+  for (uint32_t f : kept)
+    for (uint32_t t = faces[f].firstTriangle; t < faces[f].firstTriangle + faces[f].triangleCount; ++t) {
+      faceOfTriangle[t] = f;
+      for (const Vec3& p : triangles[t]) triangleBounds[t].add({p - Vec3(tolerance), p + Vec3(tolerance)});
+    }
+  std::vector<uint32_t> allTriangles(triangles.size());
+  std::iota(allTriangles.begin(), allTriangles.end(), 0);
+  const BoxTree triangleTree(triangleBounds, std::move(allTriangles));
+  std::vector<RayHit> hits;
+  for (uint32_t f : kept) {
     const Vec3 back = -faces[f].normal;
     const Vec3 t1 = glm::normalize(glm::cross(back, std::abs(back.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
     const Vec3 t2 = glm::cross(back, t1);
@@ -692,8 +777,9 @@ std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& se
     const Vec3 directions[] = {back, glm::normalize(back + t1), glm::normalize(back - t1), glm::normalize(back + t2),
                                glm::normalize(back - t2)};
     for (const Vec3& direction : std::span(directions, rays)) {
+      ++work.rays;
       const auto [hit, distance] =
-          castRay(grid, faces, triangles, f, faces[f].inside, direction, tolerance, stamp, ++ray);
+          castRay(triangleTree, faces, triangles, faceOfTriangle, f, faces[f].inside, direction, tolerance, hits, work);
       if (hit < 0 || glm::dot(faces[hit].normal, direction) >= 0) continue;  // none, or a back
       out.push_back({FindingKind::Facade, f, hit, faces[f].inside,
                      "its back is seen from the front of " + faceName(scene, static_cast<uint32_t>(hit)) + ", " +
@@ -704,8 +790,9 @@ std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& se
 
   std::stable_sort(out.begin(), out.end(), [](const Finding& x, const Finding& y) {
     const Severity sx = severityOf(x.kind), sy = severityOf(y.kind);
-    return std::tie(sx, x.surface, x.kind) < std::tie(sy, y.surface, y.kind);
+    return std::tie(sx, x.surface, x.kind, x.other) < std::tie(sy, y.surface, y.kind, y.other);
   });
+  if (counted) *counted = work;
   return out;
 }
 

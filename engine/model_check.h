@@ -67,11 +67,23 @@ struct ModelCheckSettings {
   double closedShare = 0.5;
 };
 
+// What a check did, counted where it is done, so tests can hold its cost to the model's size
+// without a clock. A bounds test compares two boxes (of a tree node, face, triangle or point).
+struct ModelCheckWork {
+  uint64_t pairBoundsTests = 0;  // looking for the pairs of faces whose bounds overlap
+  uint64_t pairsChecked = 0;     // those pairs, each checked for overlap or crossing
+  uint64_t edgeBoundsTests = 0;  // looking for vertices on open edges (T-junctions)
+  uint64_t rays = 0;             // cast from the faces' backs
+  uint64_t rayBoundsTests = 0;   // by those rays (a triangle reached counts one)
+};
+
 // Checks `scene`'s surfaces as loadSceneFaces gives them (one per face: before coplanar merging,
 // which would hide duplicates and join faces) and returns the findings, errors first, then
-// warnings, then notes, each by surface.
-// Spatial hashing keeps it near-linear in the number of faces.
-std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& settings = {});
+// warnings, then notes, each by surface, kind and the other face involved. Bounding volume
+// hierarchies over the faces, their triangles and their open edges' vertices keep the work
+// near-linear in the number of faces however they are spread; `work`, when given, receives the
+// counts.
+std::vector<Finding> checkModel(const Scene& scene, const ModelCheckSettings& settings = {}, ModelCheckWork* work = nullptr);
 
 // "objects[2].solids[0] (desk, top) at (1.5, 0.75, 2)": where a finding is, for messages.
 std::string describeLocation(const Scene& scene, const Finding& finding);

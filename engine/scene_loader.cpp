@@ -258,6 +258,16 @@ class SceneParser {
   Scene& scene_;
 };
 
+// The faces a solid makes at most: a side per profile point and band, the two ends, a surface per
+// filled hole (open faces and apexes make fewer).
+size_t mostFaces(const Solid& solid) {
+  const size_t bands = solid.taper.kind == TaperKind::Radial ? static_cast<size_t>(solid.taper.slices) : 1;
+  size_t fills = 0;
+  for (const auto& [name, face] : solid.faces)
+    fills += static_cast<size_t>(std::count_if(face.holes.begin(), face.holes.end(), [](const Hole& h) { return h.fillMaterial.has_value(); }));
+  return solid.profile.size() * bands + 2 + fills;
+}
+
 // Every patch size the file gives, against the scene's extent.
 void checkPatchSizes(const Scene& scene) {
   const double extent = sceneExtent(scene);
@@ -294,6 +304,13 @@ Scene parseSceneFaces(std::string_view text, const std::string& file) {
   scene.file = file;
   SceneParser(in, scene).parse(root);
 
+  // Counted before anything is swept, so that a file asking too much is refused at once.
+  size_t faces = 0;
+  for (const Object& object : scene.objects)
+    for (const Solid& solid : object.solids) {
+      faces += mostFaces(solid);
+      checkFaceCount(faces, file, solid.jsonPath);
+    }
   for (uint32_t i = 0; i < scene.objects.size(); ++i)
     for (const Solid& solid : scene.objects[i].solids)
       appendSolidSurfaces(scene, i, solid, scene.objects[i].patchSize, scene.surfaces);
@@ -345,6 +362,11 @@ void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
 void checkPatchSize(double patchSize, double extent, const std::string& file, const std::string& place) {
   if (std::isnan(patchSize) || extent / patchSize > kMaxPatchesPerEdge)
     throw SceneError(Diag::PatchTooSmall, file, place, "scene extent " + std::to_string(extent));
+}
+
+void checkFaceCount(size_t faces, const std::string& file, const std::string& place) {
+  if (faces > kMaxFaces)
+    throw SceneError(Diag::TooManyFaces, file, place, std::to_string(faces) + " faces by here, at most " + std::to_string(kMaxFaces));
 }
 
 void overridePatchSize(Scene& scene, double patchSize) {

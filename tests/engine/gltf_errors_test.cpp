@@ -165,6 +165,21 @@ TEST(GltfErrors, AChainOfTwentyThousandNodesLoads) {
   EXPECT_EQ(what, "loop.gltf: nodes[" + std::to_string(kDepth / 2) + "]: " + describe(Diag::NodeLoop));
 }
 
+TEST(GltfErrors, TooManyTrianglesAreRefusedBeforeTheyAreMade) {
+  // A strip of one byte an index makes a triangle a byte: 4 MB of them pass the limit.
+  test::GltfPrimitive strip;
+  strip.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+  strip.indices.resize(kMaxFaces + 3);
+  for (size_t i = 0; i < strip.indices.size(); ++i) strip.indices[i] = static_cast<uint32_t>(i % 3);
+  strip.indexType = test::kUnsignedByte;
+  strip.mode = test::kTriangleStrip;
+  GltfModel m = test::floorModel();
+  m.nodes[0].primitives.push_back(strip);
+  std::string what;
+  EXPECT_EQ(test::refusalOf([&] { parseGltf(test::glbBytes(m), "strip.glb"); }, &what), Diag::TooManyFaces);
+  EXPECT_EQ(what.rfind("strip.glb: meshes[0].primitives[1]: ", 0), 0u) << what;
+}
+
 TEST(GltfErrors, SidecarNamesAreChecked) {
   const std::string model = writeFile("sidecar-names.gltf", test::gltfText(smallModel()));
   std::string what;
@@ -210,12 +225,12 @@ TEST(GltfErrors, ModelOptionsAreRefusedForSceneFiles) {
 
 // Every glTF diagnostic of the table is produced above.
 TEST(GltfErrors, EveryGltfDiagnosticHasACase) {
-  std::set<Diag> covered{Diag::UnknownNode, Diag::GltfOnly, Diag::WrongByteLength};  // the tests above
+  std::set<Diag> covered{Diag::UnknownNode, Diag::GltfOnly, Diag::WrongByteLength, Diag::TooManyFaces};  // the tests above
   for (const ErrorCase& c : kCases) covered.insert(c.diag);
   // The files a model names: gltf_files_test.cpp.
   covered.insert({Diag::UriAbsolute, Diag::UriOutsideFolder});
   for (Diag d : {Diag::NotGltf, Diag::BadGltfReference, Diag::BadAccessor, Diag::NodeLoop, Diag::NoTriangles, Diag::UnknownNode,
-                 Diag::GltfOnly, Diag::UriAbsolute, Diag::UriOutsideFolder, Diag::WrongByteLength})
+                 Diag::GltfOnly, Diag::UriAbsolute, Diag::UriOutsideFolder, Diag::WrongByteLength, Diag::TooManyFaces})
     EXPECT_TRUE(covered.count(d)) << describe(d) << " has no test";
 }
 

@@ -293,6 +293,49 @@ TEST(ModelCheck, ShippedScenesFindingsAreTheKnownOnes) {
   }
 }
 
+// A dense dome (a hemisphere of triangles, open at its rim) and, when `farBox`, a box 1,000 units
+// away, so that the dome is a speck of the scene.
+Scene domeScene(bool farBox) {
+  FaceScene faces;
+  constexpr int kRings = 64, kSegments = 128;
+  const auto at = [&](int i, int j) {
+    const double theta = 0.5 * M_PI * i / kRings, phi = 2 * M_PI * (j % kSegments) / kSegments;
+    return 10.0 * Vec3{std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+  };
+  for (int i = 0; i < kRings; ++i)
+    for (int j = 0; j < kSegments; ++j) {
+      const Vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if (i > 0) faces.face("dome", {a, d, c});
+      faces.face("dome", {a, c, b});
+    }
+  if (farBox) faces.box("far box", Vec3(1000, 0, 0), Vec3(1001, 1, 1));
+  return faces.scene();
+}
+
+TEST(ModelCheck, WorkFollowsTheFacesNotHowTheyAreSpread) {
+  // A uniform grid over the scene would put the whole dome into a few cells beside the far box
+  // and compare its faces pair by pair (16,000 faces: 10^8 pairs). The work per face must stay
+  // about what the dome alone costs.
+  ModelCheckWork alone, beside;
+  const Scene dome = domeScene(false), withBox = domeScene(true);
+  const auto found = checkModel(withBox, {}, &beside);
+  checkModel(dome, {}, &alone);
+  const double faces = static_cast<double>(withBox.surfaces.size());
+  ASSERT_GT(faces, 16000);
+  // Each face meets its neighbours (sharing an edge or a corner, about 7 here) and what its
+  // bounds reach; a query, like a ray, visits a few tens of boxes.
+  EXPECT_LT(beside.pairsChecked, 10 * faces);
+  EXPECT_LT(beside.pairBoundsTests, 150 * faces);
+  EXPECT_LT(beside.edgeBoundsTests, 150 * faces);
+  EXPECT_LT(beside.rayBoundsTests, 150 * static_cast<double>(beside.rays));
+  // The box adds its own few, not a share of the dome's.
+  EXPECT_LT(beside.pairsChecked, 1.1 * static_cast<double>(alone.pairsChecked) + 100);
+  EXPECT_LT(beside.rayBoundsTests, 1.5 * static_cast<double>(alone.rayBoundsTests) + 1000);
+  // The dome's rim is its one opening; nothing else is wrong with it.
+  ASSERT_EQ(found.size(), 1u) << found[0].message;
+  EXPECT_EQ(found[0].kind, FindingKind::OpenEdge);
+}
+
 TEST(ModelCheck, RandomTrianglesAreCheckedWithoutTrouble) {
   // Hostile input: triangles anywhere on a coarse lattice (so many touch, cross, coincide or
   // collapse), a few of them repeated; every finding names faces that exist.

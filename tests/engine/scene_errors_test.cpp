@@ -260,9 +260,37 @@ TEST(SceneErrorsText, MissingFileAndDirectoryAreUnreadable) {
   }
 }
 
+// A scene file asking for more faces than walkrad takes is refused at the solid that passes the
+// limit, before any is swept: a dome of 1,024 points and 256 slices is 262,146 faces in 20 KB, so
+// 16 of them (320 KB) would be 4.2 million.
+TEST(SceneErrorsText, TooManyFacesAreRefusedBeforeTheyAreMade) {
+  Json dome = {{"axis", "y"}, {"from", 0}, {"to", 1}, {"material", "white"}, {"taper", {{"kind", "radial"}, {"slices", 256}}}};
+  for (int i = 0; i < 1024; ++i) {
+    const double x = (i - 512) / 64.0;
+    dome["profile"].push_back({x, x * x});
+  }
+  Json j = test::baseScene();
+  for (int o = 0; o < 16; ++o) {
+    const Json object = {{"name", "dome " + std::to_string(o)}, {"position", {20.0 * o, 0, 0}}, {"solids", Json::array({dome})}};
+    j["objects"].push_back(object);
+  }
+  const std::string text = j.dump();
+  const size_t faces = 262146;
+  // The room and the box make 13 faces, the filled hole in the ceiling one of them.
+  const size_t limit = (kMaxFaces - 13) / faces;  // domes within the limit
+  ASSERT_LT(limit, 16u);
+  try {
+    parseSceneFaces(text, "domes.json");
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.diag(), Diag::TooManyFaces) << e.what();
+    EXPECT_EQ(e.place(), "objects[" + std::to_string(2 + limit) + "].solids[0]") << e.what();
+  }
+}
+
 // A test per way of breaking a scene: every diagnostic of the table is produced above.
 TEST(SceneErrorsText, EveryDiagnosticHasACase) {
-  std::set<Diag> covered{Diag::NotJson, Diag::FileUnreadable, Diag::DuplicateKey};  // the tests below
+  std::set<Diag> covered{Diag::NotJson, Diag::FileUnreadable, Diag::DuplicateKey, Diag::TooManyFaces};  // the tests above
   // Files that are no regular file or too large: input_file_test.cpp.
   covered.insert({Diag::NotRegularFile, Diag::FileTooLarge});
   // glTF models' own: gltf_errors_test.cpp has a case for each.
