@@ -132,7 +132,8 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
     if (inTree(tree, change.quadrant)) tree.leavesBelow(change.quadrant, fresh);
   }
   tree.changes.clear();
-  std::sort(fresh.begin(), fresh.end());
+  const auto madeBefore = [&](int32_t a, int32_t b) { return tree.madeBefore(a, b); };
+  std::sort(fresh.begin(), fresh.end(), madeBefore);
   fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
   fresh.erase(std::remove_if(fresh.begin(), fresh.end(), [&](int32_t q) { return !tree[q].isLeaf(); }), fresh.end());
   for (int32_t q : fresh) emitLeaf(q, delta);
@@ -146,10 +147,10 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
   const size_t firstStep = handsOver_ ? near.size() : 0;
   for (size_t i = 0; i < firstStep; ++i)
     for (Side side : kSides) tree.neighbors(near[i], side, near);
-  std::sort(near.begin(), near.end());
+  std::sort(near.begin(), near.end(), madeBefore);
   near.erase(std::unique(near.begin(), near.end()), near.end());
   for (int32_t n : near) {
-    if (std::binary_search(fresh.begin(), fresh.end(), n)) continue;
+    if (std::binary_search(fresh.begin(), fresh.end(), n, madeBefore)) continue;
     if (emitter_->ringIds(n) == leafRings_[static_cast<size_t>(n)]) continue;
     removeLeafElements(n, delta);
     emitLeaf(n, delta);

@@ -134,6 +134,7 @@ bool Quadtree::crossedBy(int32_t q, uint32_t e) const {
 // at it; without one, a single edge. (Every end of an edge that lies in the closed square is
 // the leaf's vertex: vertices go in first.)
 bool Quadtree::accepts(const Quadrant& leaf, uint32_t e) const {
+  if (leaf.level < uniformDepth) return false;
   if (leaf.vertex < 0) return leaf.edgeCount == 0;
   const auto v = static_cast<uint32_t>(leaf.vertex);
   return (input.edgeInto[v] == e || input.edgeOutOf[v] == e) && leaf.edgeCount < 2;
@@ -146,7 +147,7 @@ bool Quadtree::insertVertex(uint32_t v) {
     const bool edgesEndHere = std::all_of(quad.edges.begin(), quad.edges.begin() + quad.edgeCount, [&](uint32_t e) {
       return input.edges[e][0] == v || input.edges[e][1] == v;
     });
-    if (quad.vertex < 0 && edgesEndHere) {
+    if (quad.vertex < 0 && edgesEndHere && quad.level >= uniformDepth) {
       quad.vertex = static_cast<int32_t>(v);
       return Visit::Done;
     }
@@ -174,6 +175,12 @@ bool Quadtree::splitLeaf(int32_t q) {
   if (complete) changes.push_back({q, old});
   else if (old.level >= uniformDepth) storageSplits.push_back(q);
   const int32_t first = (*this)[q].firstChild;
+  if (!complete && old.level < uniformDepth) {
+    // Coarser than the patch size it held nothing; a few edges' children take their side now.
+    if (input.edges.size() <= kFewEdges)
+      for (int32_t c = first; c < first + 4; ++c) quadrants[static_cast<size_t>(c)].status = old.status == QuadStatus::Undefined ? sideWhileBuilding(c) : old.status;
+    return true;
+  }
   for (int32_t c = first; c < first + 4; ++c) {
     if (old.vertex >= 0 && holdsPoint(c, input.vertices[static_cast<size_t>(old.vertex)]))
       quadrants[static_cast<size_t>(c)].vertex = old.vertex;
@@ -223,6 +230,10 @@ bool Quadtree::crossedByAnyEdge(int32_t q) const {
   for (uint32_t e = 0; e < input.edges.size(); ++e)
     if (input.active(e) && crossedBy(q, e)) return true;
   return false;
+}
+
+QuadStatus Quadtree::sideWhileBuilding(int32_t q) const {
+  return (*this)[q].level < uniformDepth && crossedByAnyEdge(q) ? QuadStatus::Undefined : castFromCentre(*this, q);
 }
 
 void Quadtree::edgesThrough(int32_t q, std::vector<uint32_t>& out) const {
@@ -358,6 +369,14 @@ bool segmentCrossesOpenSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, d
   // A chord of a square either lies in its border or runs through its inside: test its middle.
   const Vec2 m = a + d * (0.5 * (t0 + t1));
   return t0 <= t1 && x0 < m.x && m.x < x1 && y0 < m.y && m.y < y1;
+}
+
+bool Quadtree::madeBefore(int32_t a, int32_t b) const {
+  const Quadrant &qa = (*this)[a], &qb = (*this)[b];
+  const bool coarseA = qa.level <= uniformDepth, coarseB = qb.level <= uniformDepth;
+  if (coarseA != coarseB) return coarseA;
+  if (!coarseA) return a < b;
+  return qa.level != qb.level ? qa.level < qb.level : comesBefore(qa, qb);
 }
 
 std::vector<int32_t> Quadtree::leaves() const {
@@ -511,6 +530,28 @@ void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, Quad
   linkEdges();
 }
 
+namespace {
+
+// The last phase of a build: inside leaves coarser than the patch size (no vertex or edge met
+// them) split down to it, their quadrants all inside.
+void splitInsideToUniformDepth(Quadtree& tree) {
+  std::vector<int32_t> coarse;
+  tree.leaves(coarse);
+  coarse.erase(std::remove_if(coarse.begin(), coarse.end(), [&](int32_t q) {
+                 return tree[q].status != QuadStatus::Inside || tree[q].level >= tree.uniformDepth;
+               }), coarse.end());
+  for (size_t i = 0; i < coarse.size(); ++i) {
+    const int32_t q = coarse[i];
+    tree.splitLeaf(q);
+    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c) {
+      tree.quadrants[static_cast<size_t>(c)].status = QuadStatus::Inside;
+      if (tree[c].level < tree.uniformDepth) coarse.push_back(c);
+    }
+  }
+}
+
+}  // namespace
+
 std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap) {
   Quadtree tree;
   tree.input = std::move(input);
@@ -528,29 +569,21 @@ bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
   tree.complete = false;
   tree.changes.clear();
   tree.quadrants.clear();
-  tree.quadrants.reserve(size_t{4} << (2 * std::min(depth, 10)));
+  tree.quadrants.reserve(64 * tree.input.vertices.size());
   tree.quadrants.push_back(Quadrant{});
   tree.uniformDepth = depth;
   tree.storageSplits.clear();
 
-  // Phases: the uniform tree of the patch size, then vertices, then edges (5.2). A polygon of few
+  // Phases: vertices, then edges, stored from the root (5.2), then the sides of the leaves, then
+  // the inside split down to the patch size. A quadrant coarser than the patch size holds
+  // nothing: one that a vertex or an edge meets is split. So the tree is uniform to the patch
+  // size inside the polygon and along its boundary, and a quadrant wholly outside stays as
+  // coarse as it is: a thin polygon's tree does not fill its root square. A polygon of few
   // edges has its leaves classified as they are made (classify.h): a square no edge crosses
-  // hands its side down; a leaf of the uniform tree that one crosses, or a leaf split to store,
-  // casts its own ray (edges stored make it Boundary).
+  // hands its side down, a leaf crossed below the patch size or split to store casts its own
+  // ray (edges stored make it Boundary).
   const bool fewEdges = tree.input.edges.size() <= kFewEdges;
-  auto sideOf = [&](int32_t q) {
-    return tree[q].level < depth && tree.crossedByAnyEdge(q) ? QuadStatus::Undefined : castFromCentre(tree, q);
-  };
-  if (fewEdges) tree.quadrants[0].status = sideOf(0);
-  // Made level by level, so the first quadrant at the uniform depth ends the phase.
-  for (size_t i = 0; i < tree.quadrants.size() && tree.quadrants[i].level < depth; ++i) {
-    const auto q = static_cast<int32_t>(i);
-    const QuadStatus side = tree[q].status;
-    tree.splitLeaf(q);
-    if (!fewEdges) continue;
-    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c)
-      tree.quadrants[static_cast<size_t>(c)].status = side == QuadStatus::Undefined ? sideOf(c) : side;
-  }
+  if (fewEdges) tree.quadrants[0].status = tree.sideWhileBuilding(0);
   for (uint32_t v = 0; v < tree.input.vertices.size(); ++v)
     if (!tree.insertVertex(v)) return false;
   for (uint32_t e = 0; e < tree.input.edges.size(); ++e)
@@ -564,6 +597,7 @@ bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
   } else {
     classifyLeaves(tree);
   }
+  splitInsideToUniformDepth(tree);
   tree.complete = true;
   return true;
 }

@@ -64,6 +64,11 @@ class Quadtree {
   int64_t edgeLength(const Quadrant& q) const { return int64_t{1} << (maxDepth - q.level); }
   const Quadrant& operator[](int32_t q) const { return quadrants[static_cast<size_t>(q)]; }
 
+  // Whether quadrant a comes before quadrant b in the order the refiner visits leaves in, which
+  // decides its splits: quadrants no finer than the uniform depth level by level in tree order,
+  // then the finer ones in the order they were made (their index).
+  bool madeBefore(int32_t a, int32_t b) const;
+
   // Leaves only, in tree order (into `out`, replacing what it held).
   std::vector<int32_t> leaves() const;
   void leaves(std::vector<int32_t>& out) const;
@@ -90,6 +95,10 @@ class Quadtree {
   void forEachLeafWithAdjacent(Visit visit) const;
   // Whether an active input edge passes through quadrant q's open square (as stored edges do).
   bool crossedByAnyEdge(int32_t q) const;
+  // A new quadrant's side while the tree of a polygon of few edges is built (classify.h):
+  // Undefined when an edge crosses it coarser than the patch size (it will be split), else by a
+  // ray from its centre.
+  QuadStatus sideWhileBuilding(int32_t q) const;
   // Whether point p of leaf q's closed square lies inside the polygon, from the leaf's own
   // vertex and edges (its status when it holds none). p must not lie on a stored edge.
   bool insideAt(int32_t q, Vec2 p) const;
@@ -159,11 +168,12 @@ Vec2 treePoint(const TreeFrame& frame, Vec2 plane);
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame);
 void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, QuadtreeInput& into);
 
-// Subdivides the root uniformly to `depth`, stores every vertex and edge under the rules of 5.2:
-// a leaf holds at most one distinct vertex (in its closed square); with a vertex, only edges
-// ending at it; without one, at most one edge. Leaves holding edges are Boundary; every other
-// leaf is Inside or Outside by its centre. Returns nothing when two vertices cannot be separated
-// within maxDepth levels (the caller builds a deeper tree: vertices are never merged).
+// Stores every vertex and edge under the rules of 5.2: a leaf holds at most one distinct vertex
+// (in its closed square); with a vertex, only edges ending at it; without one, at most one edge.
+// No leaf inside the polygon or on its boundary is coarser than `depth`; leaves wholly outside
+// may be. Leaves holding edges are Boundary; every other leaf is Inside or Outside by its centre.
+// Returns nothing when two vertices cannot be separated within maxDepth levels (the caller
+// builds a deeper tree: vertices are never merged).
 std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap = 1e-6);
 // The same over `tree.input`, reusing the tree's memory; false where the first form gives nothing.
 // Both throw std::invalid_argument for a maxDepth above kDeepestTree (or depth outside 0..maxDepth).

@@ -202,7 +202,7 @@ size_t QualityRefiner::splitCoarseTakers() {
     regions_.collectCoarseTakers(&takers_);
     for (int32_t q : leaves_) regions_.build(q);
     regions_.collectCoarseTakers(nullptr);
-    std::sort(takers_.begin(), takers_.end());
+    std::sort(takers_.begin(), takers_.end(), [&](int32_t a, int32_t b) { return tree.madeBefore(a, b); });
     takers_.erase(std::unique(takers_.begin(), takers_.end()), takers_.end());
     seeds_.clear();
     for (int32_t q : takers_) {
@@ -241,14 +241,17 @@ void QualityRefiner::collectVertexLeavesChangedSince(size_t mark) {
         if (tree[n].vertex >= 0) touched_.emplace_back(n, i);
     }
   }
-  std::sort(touched_.begin(), touched_.end());
-  std::sort(verified_.begin(), verified_.end());
+  const auto before = [&](const std::pair<int32_t, size_t>& a, const std::pair<int32_t, size_t>& b) {
+    return a.first != b.first ? tree.madeBefore(a.first, b.first) : a.second < b.second;
+  };
+  std::sort(touched_.begin(), touched_.end(), before);
+  std::sort(verified_.begin(), verified_.end(), before);
   leaves_.clear();
   for (size_t k = 0; k < touched_.size(); ++k) {
     const auto [q, lastSplit] = touched_[k];
     if (k + 1 < touched_.size() && touched_[k + 1].first == q) continue;
     // Left out when it reached the bound after the last split that touched it.
-    const auto after = std::upper_bound(verified_.begin(), verified_.end(), std::pair{q, lastSplit});
+    const auto after = std::upper_bound(verified_.begin(), verified_.end(), std::pair{q, lastSplit}, before);
     if (after == verified_.end() || after->first != q) leaves_.push_back(q);
   }
 }
