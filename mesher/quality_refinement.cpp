@@ -46,13 +46,6 @@ constexpr int kPasses = 10;
 // buildPolygonTree deepens one whose vertices it cannot separate).
 constexpr int kDeeperTree = 8;
 
-// The smallest a deeper tree's finest leaf may be, over its rounding (TreeFrame::rounding): far
-// from the origin, 1e-12 of the polygon's coordinates. In 250,000 random polygons this leaves 2
-// elements below the bound, both in one polygon, and no invalid mesh; the finest leaf at 1e-8 of
-// the coordinates left 34 in 40,000, and no limit (trees 50 levels deep) 345 and three invalid
-// meshes, the smallest elements lost in rounding.
-constexpr double kFinestLeafOverRounding = 280;
-
 // How many levels below itself a short leaf without a vertex, or with one on its border, may be
 // split (one did in every random polygon that had one).
 constexpr int kShortLeafLevels = 3;
@@ -330,10 +323,11 @@ void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTre
   into.tree.changes.clear();
 }
 
-PolygonTree buildMeshTree(const PolygonWithHoles& polygon, double patchSize) {
+PolygonTree buildMeshTree(const PolygonWithHoles& polygon, const MeshSettings& settings) {
   PolygonTree built;
+  built.tree.quadrantBudget = settings.maxQuadrants;
   std::optional<QualityRefiner> refiner;
-  buildMeshTree(polygon, patchSize, built, refiner);
+  buildMeshTree(polygon, settings.patchSize, built, refiner);
   return built;
 }
 
