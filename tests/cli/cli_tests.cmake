@@ -127,6 +127,9 @@ walkrad_cli_test(render_patch_size_near_limit 2 ARGS render ${PROJECT_SOURCE_DIR
 # reaches the limit (it meshed for over 20 s); a comb of 50 teeth meshes without T-vertices or
 # elements below the angle bound (it had 42, and an angle of 0 degrees).
 walkrad_cli_test(mesh_needle_refused 2 ARGS mesh ${cli_dir}/needle.json STDERR "needle.json: outer: mesh too large")
+# Vertices 1e-10 apart 1e5 from the origin: closer than the mesh's points resolve there.
+walkrad_cli_test(mesh_hair_apart_far 2 ARGS mesh ${cli_dir}/hair_apart_far.json
+                 STDERR "hair_apart_far.json: outer: detail finer than the coordinates resolve")
 walkrad_cli_test(mesh_comb 0 ARGS mesh ${cli_dir}/comb50.json STDOUT " 0 T-vertices, smallest angle 21.80 deg \\(0 elements below")
 
 # --move: after converging, an object moves through the edit path and the light converges again.
