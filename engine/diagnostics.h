@@ -34,6 +34,8 @@ namespace engine {
   X(HoleOutsideFace, "hole is not strictly inside its face")                          \
   X(HolesTouch, "holes touch or overlap")                                             \
   X(PatchTooSmall, "patch size too small for the scene (over 100000 patches per edge)") \
+  X(MeshTooLarge, "mesh too large (over the mesher's limit: a patch size too small, or a polygon too thin)") \
+  X(MeshTooFine, "detail finer than the coordinates resolve (points or edges a hair apart far from the origin)") \
   X(BadCamera, "camera looks nowhere (position equals look_at, or up is parallel to the view)") \
   X(NotGltf, "not a readable glTF 2.0 model")                                         \
   X(BadGltfReference, "glTF index refers to nothing")                                 \

@@ -1,12 +1,25 @@
 #include "engine/meshed_scene.h"
 
+#include <string>
+
 namespace engine {
 
-MeshedScene meshScene(const Scene& scene) {
+MeshedScene meshScene(const Scene& scene, size_t* repeats) {
   MeshedScene meshed;
   meshed.surfaces.reserve(scene.surfaces.size());
   mesher::Mesher mesher;
-  for (const Surface& s : scene.surfaces) meshed.surfaces.push_back(meshSurface(s, mesher));
+  size_t elements = 0;
+  for (const Surface& s : scene.surfaces) {
+    try {
+      meshed.surfaces.push_back(meshSurface(s, mesher));
+    } catch (const mesher::MeshRefused& refused) {
+      throw meshRefusal(refused, scene.file, s.jsonPath);
+    }
+    elements += meshed.surfaces.back().mesh.elements.size();
+    if (elements > kMaxSceneElements)
+      throw SceneError(Diag::MeshTooLarge, scene.file, s.jsonPath, "the scene's meshes pass " + std::to_string(kMaxSceneElements) + " elements here");
+  }
+  if (repeats) *repeats = mesher.repeats();
   return meshed;
 }
 

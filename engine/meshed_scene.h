@@ -15,8 +15,15 @@ struct MeshedScene {
   std::vector<SurfaceMesh> surfaces;  // per Scene::surfaces, in order
 };
 
-// Meshes every surface at its patch size.
-MeshedScene meshScene(const Scene& scene);
+// The most elements a scene's meshes may have in all: far above the large models' (a living room
+// of 2.6 million), and about 2 GB of meshes, solver and display data.
+constexpr size_t kMaxSceneElements = size_t{1} << 24;
+
+// Meshes every surface at its patch size, through one mesher::Mesher (`repeats`, when given,
+// counts the surfaces that were repeats: Mesher::repeats). Throws SceneError naming the scene's
+// file and the surface's JSON path for a surface the mesher refuses (mesher.h's limits), or
+// where the meshes pass kMaxSceneElements.
+MeshedScene meshScene(const Scene& scene, size_t* repeats = nullptr);
 
 // Shooting patches are squares of this many patch sizes (substructuring): elements stay at the
 // patch size for display and receiving, while fewer patches shoot. A patch's near receivers take

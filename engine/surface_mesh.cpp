@@ -100,6 +100,11 @@ SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher) {
   return result;
 }
 
+SceneError meshRefusal(const mesher::MeshRefused& refused, const std::string& file, const std::string& place) {
+  const bool tooLarge = refused.reason() == mesher::MeshRefused::Reason::TooLarge;
+  return SceneError(tooLarge ? Diag::MeshTooLarge : Diag::MeshTooFine, file, place, refused.what());
+}
+
 std::vector<Vec3> worldPositions(const Surface& surface, const std::vector<mesher::Vec2>& vertices) {
   const PlaneFrame frame = planeFrame(surface);
   // The surface's own points come first in the mesh, in the same order: keep them exact.

@@ -2,6 +2,7 @@
 // meshed there at its patch size, and the mesh's vertices lifted back into the world.
 #pragma once
 
+#include "engine/diagnostics.h"
 #include "engine/scene.h"
 #include "mesher/mesher.h"
 
@@ -25,8 +26,13 @@ std::optional<std::pair<Vec3, Vec3>> axisPlaneAxes(const Vec3& normal);
 // Plane coordinates are two world axes when the surface faces along one (exact coordinates,
 // axis-aligned edges stay axis-aligned), else axes along its longest outer edge.
 // The second form meshes with `mesher`, whose memory carries over from surface to surface.
+// Both throw mesher::MeshRefused for a surface the mesher refuses (meshRefusal says where).
 SurfaceMesh meshSurface(const Surface& surface);
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher);
+
+// The scene error for a polygon the mesher refused: MeshTooLarge or MeshTooFine, at `place`
+// (a surface's JSON path, or a polygon case's "outer") of `file`.
+SceneError meshRefusal(const mesher::MeshRefused& refused, const std::string& file, const std::string& place);
 
 // World positions of the vertices of a mesh of `surface` in its plane coordinates (as
 // meshSurface meshes it, or an adaptive mesh of SurfaceMesh::polygon): the surface's own points,

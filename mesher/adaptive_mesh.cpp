@@ -28,7 +28,7 @@ bool inTree(const Quadtree& tree, int32_t q) {
 }  // namespace
 
 AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
-    : built_(buildMeshTree(polygon, settings.patchSize)) {
+    : built_(buildMeshTree(polygon, settings)) {
   handsOver_ = std::find(built_.tree.input.shallow.begin(), built_.tree.input.shallow.end(), 1) != built_.tree.input.shallow.end();
   std::vector<int32_t> leaves = built_.tree.leaves(), shortLeaves;
   emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
@@ -38,15 +38,18 @@ AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& 
   emitter_->collectShortLeaves(nullptr);
   // As Mesher meshes: leaves the refiner did not look at that fell short of the angle bound are
   // split (QualityRefiner::splitShortLeaves), and the tree is meshed again from the start.
-  if (shortLeaves.empty() || QualityRefiner(built_).splitShortLeaves(shortLeaves) == 0) return;
-  built_.tree.changes.clear();
-  slots_.clear();
-  freeSlots_.clear();
-  leafSlots_.clear();
-  leafRings_.clear();
-  built_.tree.leaves(leaves);
-  emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
-  for (int32_t q : leaves) emitLeaf(q, ignored);
+  if (!shortLeaves.empty() && QualityRefiner(built_).splitShortLeaves(shortLeaves) > 0) {
+    built_.tree.changes.clear();
+    slots_.clear();
+    freeSlots_.clear();
+    leafSlots_.clear();
+    leafRings_.clear();
+    built_.tree.leaves(leaves);
+    emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
+    for (int32_t q : leaves) emitLeaf(q, ignored);
+  }
+  // The limit is meshing's; how far to refine is the caller's to say.
+  built_.tree.quadrantBudget = SIZE_MAX;
 }
 
 AdaptiveMesh::~AdaptiveMesh() = default;
@@ -132,7 +135,8 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
     if (inTree(tree, change.quadrant)) tree.leavesBelow(change.quadrant, fresh);
   }
   tree.changes.clear();
-  std::sort(fresh.begin(), fresh.end());
+  const auto madeBefore = [&](int32_t a, int32_t b) { return tree.madeBefore(a, b); };
+  std::sort(fresh.begin(), fresh.end(), madeBefore);
   fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
   fresh.erase(std::remove_if(fresh.begin(), fresh.end(), [&](int32_t q) { return !tree[q].isLeaf(); }), fresh.end());
   for (int32_t q : fresh) emitLeaf(q, delta);
@@ -146,10 +150,10 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
   const size_t firstStep = handsOver_ ? near.size() : 0;
   for (size_t i = 0; i < firstStep; ++i)
     for (Side side : kSides) tree.neighbors(near[i], side, near);
-  std::sort(near.begin(), near.end());
+  std::sort(near.begin(), near.end(), madeBefore);
   near.erase(std::unique(near.begin(), near.end()), near.end());
   for (int32_t n : near) {
-    if (std::binary_search(fresh.begin(), fresh.end(), n)) continue;
+    if (std::binary_search(fresh.begin(), fresh.end(), n, madeBefore)) continue;
     if (emitter_->ringIds(n) == leafRings_[static_cast<size_t>(n)]) continue;
     removeLeafElements(n, delta);
     emitLeaf(n, delta);
@@ -163,7 +167,7 @@ MeshDelta AdaptiveMesh::refine(ElementId e) {
   Quadtree& tree = built_.tree;
   const int32_t q = slots_[e.slot].leaf;
   const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
-  if (tree[q].level >= tree.maxDepth) return {};
+  if (tree[q].level >= tree.finestLevel) return {};
   // A split whose edges would need levels the tree does not have is taken back: the mesh stays
   // as it was.
   if (!tree.splitLeaf(q)) {

@@ -33,7 +33,8 @@ struct MeshDelta {
 
 class AdaptiveMesh {
  public:
-  // Meshes the polygon as meshPolygon() does. Throws std::invalid_argument as it does.
+  // Meshes the polygon as meshPolygon() does, within the settings' work limit; throws MeshRefused
+  // as it does. Later refines and inserted holes are not limited: the caller says how far to go.
   AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings);
   ~AdaptiveMesh();
   AdaptiveMesh(const AdaptiveMesh&) = delete;

@@ -35,6 +35,7 @@ class PointIds {
     toUnit_ = 1 / rootSize;
     slots_.assign(std::bit_ceil(std::max<size_t>(16, 2 * expected)), kEmpty);
     shift_ = 64 - std::countr_zero(slots_.size());
+    windowBits_ = kFirstWindowBits;
     entries_.clear();
     entries_.reserve(expected);
     nextId_ = 0;
@@ -43,30 +44,19 @@ class PointIds {
   // The id of p, listing it with the next id when it is new (`added` says which).
   uint32_t findOrAdd(const Vec2& p, bool& added) {
     if (2 * (entries_.size() + 1) > slots_.size()) grow();
-    size_t slot = slotOf(p);
-    while (slots_[slot] != kEmpty) {
-      const Entry& e = entries_[slots_[slot]];
-      if (e.at == p) {
-        added = false;
-        return e.id;
-      }
-      slot = (slot + 1) & (slots_.size() - 1);
-    }
-    added = true;
-    return list(slot, p);
+    const size_t slot = probe(p);
+    added = slots_[slot] == kEmpty;
+    return added ? list(slot, p) : entries_[slots_[slot]].id;
   }
   // The id of a listed point p, or kNone.
-  uint32_t find(const Vec2& p) const {
-    for (size_t slot = slotOf(p); slots_[slot] != kEmpty; slot = (slot + 1) & (slots_.size() - 1))
-      if (entries_[slots_[slot]].at == p) return entries_[slots_[slot]].id;
-    return kNone;
+  uint32_t find(const Vec2& p) {
+    const size_t slot = probe(p);
+    return slots_[slot] == kEmpty ? kNone : entries_[slots_[slot]].id;
   }
   // The next id for a point the caller knows is new, listed without comparisons, or not listed.
   uint32_t addNew(const Vec2& p) {
     if (2 * (entries_.size() + 1) > slots_.size()) grow();
-    size_t slot = slotOf(p);
-    while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
-    return list(slot, p);
+    return list(probe(p, false), p);
   }
   uint32_t addUnlisted() { return nextId_++; }
 
@@ -77,6 +67,16 @@ class PointIds {
     uint32_t id;
   };
 
+  // The slot holding p (when `compare`), or the empty one ending its probe run. A run longer
+  // than kLongRun means points crowd one window: the windows widen.
+  size_t probe(const Vec2& p, bool compare = true) {
+    size_t slot = slotOf(p), run = 0;
+    for (; slots_[slot] != kEmpty && !(compare && entries_[slots_[slot]].at == p); slot = (slot + 1) & (slots_.size() - 1)) ++run;
+    if (run <= kLongRun || windowBits_ >= std::countr_zero(slots_.size())) return slot;
+    windowBits_ += 4;
+    layOut();
+    return probe(p, compare);
+  }
   uint32_t list(size_t slot, const Vec2& p) {
     slots_[slot] = static_cast<uint32_t>(entries_.size());
     entries_.push_back({p, nextId_});
@@ -92,7 +92,8 @@ class PointIds {
   // The point's Morton (Z-order) cell at the table's resolution (the order leaves are visited
   // in), scattered within a window of 65,536 slots (256 KiB) by a hash of the exact point:
   // lookups stay near each other in memory, and points crowded into one cell (along a narrow
-  // gap) do not share one probe run, which made lookups quadratic.
+  // gap) do not share one probe run, which made lookups quadratic. Where more points crowd one
+  // window than it holds (a comb's thin teeth), the windows widen, up to the whole table.
   size_t slotOf(const Vec2& p) const {
     const auto x = static_cast<uint64_t>(std::clamp(p.x * toUnit_, 0.0, 1.0) * 4294967295.0);
     const auto y = static_cast<uint64_t>(std::clamp(p.y * toUnit_, 0.0, 1.0) * 4294967295.0);
@@ -102,12 +103,16 @@ class PointIds {
     const uint64_t cell = (spreadBits(x) | spreadBits(y) << 1) >> shift_;
     // The top bits of a product by an odd constant depend on every bit of the coordinate, and
     // the high bits are where small integers differ.
-    const uint64_t scatter = (a * 0x9E3779B97F4A7C15ull ^ b * 0xC2B2AE3D27D4EB4Full) >> 48;
+    const uint64_t scatter = (a * 0x9E3779B97F4A7C15ull ^ b * 0xC2B2AE3D27D4EB4Full) >> (64 - windowBits_);
     return static_cast<size_t>(cell ^ scatter) & (slots_.size() - 1);
   }
   void grow() {
-    slots_.assign(slots_.size() * 2, kEmpty);
+    slots_.resize(slots_.size() * 2);
     shift_ -= 1;
+    layOut();
+  }
+  void layOut() {
+    std::fill(slots_.begin(), slots_.end(), kEmpty);
     for (uint32_t i = 0; i < entries_.size(); ++i) {
       size_t slot = slotOf(entries_[i].at);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
@@ -115,8 +120,11 @@ class PointIds {
     }
   }
 
+  static constexpr int kFirstWindowBits = 16;
+  static constexpr size_t kLongRun = 64;
   double toUnit_ = 1;
   int shift_ = 0;
+  int windowBits_ = kFirstWindowBits;
   std::vector<uint32_t> slots_;  // entry indices
   std::vector<Entry> entries_;
   uint32_t nextId_ = 0;

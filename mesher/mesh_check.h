@@ -9,6 +9,10 @@ namespace mesher {
 
 struct MeshCheck {
   double elementArea = 0, polygonArea = 0;
+  // How far elementArea may lie from polygonArea in a tiling: 1e-9 of it, and what moving the
+  // mesh's points on the boundary as far off it as a point on an edge may lie (1e-12 of the
+  // coordinates) changes: much of the area of a thin polygon.
+  double areaTolerance = 0;
   size_t notCounterClockwiseOrConvex = 0;
   size_t movedInputVertices = 0;
   size_t tVertices = 0;             // mesh vertices inside another element's edge
@@ -24,7 +28,12 @@ struct MeshCheck {
   double smallestAspectRatio = 1;
 };
 
-// Runs every check; about linear in the mesh's size (edges are bucketed on a grid).
+// Whether the elements tile the polygon exactly with convex counter-clockwise elements, no
+// T-vertex, no overlap, its points first and unmoved.
+bool valid(const MeshCheck& check);
+
+// Runs every check, in time and memory about linear in the mesh's size (edges are bucketed on
+// grids of their own sizes; vertices are looked up against edges used once).
 MeshCheck checkMesh(const PolygonWithHoles& polygon, const Mesh& mesh);
 
 }  // namespace mesher

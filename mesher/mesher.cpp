@@ -34,6 +34,8 @@ Mesher::~Mesher() = default;
 
 size_t Mesher::repeats() const { return state_->repeats; }
 
+size_t Mesher::quadrantsMade() const { return state_->built.tree.quadrantsMade; }
+
 Mesh Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings) {
   Mesh mesh;
   this->mesh(polygon, settings, mesh);
@@ -45,6 +47,7 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   // Phases of chapter 5: tree setup, edge storage and balancing, then splits of vertex leaves
   // that would mesh below the angle bound; then leaf by leaf meshing. A repeat of a polygon
   // met before takes its mesh, placed by its own frame.
+  s.built.tree.quadrantBudget = settings.maxQuadrants;
   const int depth = setUpPolygonTree(polygon, settings.patchSize, s.built);
   if (const MeshMemo::Entry* repeat = s.memo.find(s.built, depth)) {
     out.vertices.assign(polygon.outer.begin(), polygon.outer.end());
@@ -56,8 +59,7 @@ void Mesher::mesh(const PolygonWithHoles& polygon, const MeshSettings& settings,
   }
   const int setUpMaxDepth = s.built.frame.maxDepth;
   buildMeshTree(polygon, settings.patchSize, s.built, s.refiner, depth);
-  // Every node has four children, so about a quarter of the rest are nodes (an estimate for
-  // reserving: children of splits the refiner took back stay in the array unused).
+  // Every node has four children, so about a quarter of the rest are nodes.
   const size_t leaves = (3 * s.built.tree.quadrants.size() + 1) / 4;
   if (!s.emitter) {
     s.emitter.emplace(polygon, s.built, leaves);

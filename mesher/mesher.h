@@ -13,6 +13,8 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace mesher {
@@ -22,8 +24,35 @@ namespace mesher {
 // corners that are sharper.
 constexpr double kAngleBoundDeg = 18.4;
 
+// The guarantee: meshing a polygon always ends, in time and memory in proportion to the
+// quadrants its trees make (about 40 bytes each), which bound the elements it outputs (about one
+// and a half an inside or boundary leaf). A polygon that would make more than `maxQuadrants` is
+// refused (MeshRefused) instead, before they are made: one whose patch size is too small for its
+// area is refused at once; one so thin that leaves as fine as its width run along its length (a
+// needle, a sliver) or one whose vertices lie a hair apart along a long stretch, as its tree
+// reaches the limit. The limit counts every tree built (a deeper one when a vertex needs it) and
+// the splits the quality refinement tries and takes back. The default, 2^22 quadrants (170 MB of
+// tree, a few million elements), is far above the shipped scenes' largest polygon and the large
+// models' (docs/BENCHMARKS.md).
+constexpr size_t kMaxQuadrants = size_t{1} << 22;
+
 struct MeshSettings {
   double patchSize = 1;  // largest element edge along either axis of the tree, in plane units (> 0)
+  size_t maxQuadrants = kMaxQuadrants;  // the work limit above
+};
+
+// Why a polygon was not meshed: its mesh would exceed MeshSettings::maxQuadrants (TooLarge), or
+// it has detail finer than its coordinates resolve (TooFine): two vertices, or a vertex and an
+// edge, closer than a few thousand roundings of its coordinates (repeated or crossing vertices,
+// a polygon a hair wide far from the origin), or a patch size that fine.
+class MeshRefused : public std::invalid_argument {
+ public:
+  enum class Reason { TooLarge, TooFine };
+  MeshRefused(Reason reason, const std::string& what) : std::invalid_argument(what), reason_(reason) {}
+  Reason reason() const { return reason_; }
+
+ private:
+  Reason reason_;
 };
 
 struct Mesh {
@@ -39,7 +68,7 @@ struct Mesh {
 };
 
 // Meshes a valid polygon (simple rings, holes strictly inside and disjoint; either winding).
-// Throws std::invalid_argument for a polygon whose vertices no tree depth can separate.
+// Throws MeshRefused beyond the limit above, or for detail finer than the coordinates resolve.
 Mesh meshPolygon(const PolygonWithHoles& polygon, const MeshSettings& settings);
 
 // meshPolygon for polygon after polygon: keeps the last one's tree and scratch memory, so a
@@ -54,10 +83,14 @@ class Mesher {
   ~Mesher();
   Mesh mesh(const PolygonWithHoles& polygon, const MeshSettings& settings);
   // The same into `out`, reusing its memory: meshing polygon after polygon into one Mesh touches
-  // no fresh pages, which for a million elements cost a tenth of the time.
+  // no fresh pages, which for a million elements cost a tenth of the time. After a MeshRefused,
+  // `out` holds nothing useful; the Mesher meshes the next polygon as ever.
   void mesh(const PolygonWithHoles& polygon, const MeshSettings& settings, Mesh& out);
   // How many meshes so far were those of repeats.
   size_t repeats() const;
+  // The work of the last mesh() call, refused or not: the quadrants its trees made (0 for a
+  // repeat), what MeshSettings::maxQuadrants limits.
+  size_t quadrantsMade() const;
 
  private:
   struct State;

@@ -42,6 +42,10 @@ bool strictlyInsideConvex(const Ring2& convex, Vec2 p, double margin);
 // Even-odd point-in-polygon test for a simple ring; points on the boundary give either answer.
 bool containsPoint(const Ring2& ring, Vec2 p);
 
+// Whether segments [a, b] and [c, d] share a point: they cross, or one's end lies on the other
+// (touching, or overlapping along one line), as the orientations of their ends say.
+bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
 // Distance between segments [a, b] and [c, d]; 0 when they intersect.
 double segmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 

@@ -23,6 +23,14 @@ namespace {
 
 enum class Visit { Done, Again, Fail };
 
+MeshRefused tooFine() {
+  return MeshRefused(MeshRefused::Reason::TooFine, "meshing needs leaves finer than the polygon's coordinates resolve");
+}
+
+MeshRefused tooLarge(size_t budget) {
+  return MeshRefused(MeshRefused::Reason::TooLarge, "meshing needs more than " + std::to_string(budget) + " quadrants");
+}
+
 // The pending quadrants of a depth-first walk, on the walker's own stack frame (walks nest:
 // storing an edge splits leaves, which stores edges). A node is pushed as its four children when
 // popped, so the stack holds at most three per level of the path plus four.
@@ -96,6 +104,8 @@ bool inClosedSquare(Vec2 p, double x0, double y0, double x1, double y1) {
 // [storage]
 
 void Quadtree::addChildren(int32_t q) {
+  if (quadrantsMade + 4 > quadrantBudget) throw tooLarge(quadrantBudget);
+  quadrantsMade += 4;
   const auto first = static_cast<int32_t>(quadrants.size());
   const Quadrant parent = quadrants[static_cast<size_t>(q)];
   const int64_t half = edgeLength(parent) / 2;
@@ -134,6 +144,7 @@ bool Quadtree::crossedBy(int32_t q, uint32_t e) const {
 // at it; without one, a single edge. (Every end of an edge that lies in the closed square is
 // the leaf's vertex: vertices go in first.)
 bool Quadtree::accepts(const Quadrant& leaf, uint32_t e) const {
+  if (leaf.level < uniformDepth) return false;
   if (leaf.vertex < 0) return leaf.edgeCount == 0;
   const auto v = static_cast<uint32_t>(leaf.vertex);
   return (input.edgeInto[v] == e || input.edgeOutOf[v] == e) && leaf.edgeCount < 2;
@@ -146,7 +157,7 @@ bool Quadtree::insertVertex(uint32_t v) {
     const bool edgesEndHere = std::all_of(quad.edges.begin(), quad.edges.begin() + quad.edgeCount, [&](uint32_t e) {
       return input.edges[e][0] == v || input.edges[e][1] == v;
     });
-    if (quad.vertex < 0 && edgesEndHere) {
+    if (quad.vertex < 0 && edgesEndHere && quad.level >= uniformDepth) {
       quad.vertex = static_cast<int32_t>(v);
       return Visit::Done;
     }
@@ -168,12 +179,18 @@ bool Quadtree::insertEdge(int32_t below, uint32_t e) {
 }
 
 bool Quadtree::splitLeaf(int32_t q) {
-  if ((*this)[q].level >= maxDepth) return false;
+  if ((*this)[q].level >= finestLevel) return false;
   const Quadrant old = (*this)[q];
   addChildren(q);
   if (complete) changes.push_back({q, old});
   else if (old.level >= uniformDepth) storageSplits.push_back(q);
   const int32_t first = (*this)[q].firstChild;
+  if (!complete && old.level < uniformDepth) {
+    // Coarser than the patch size it held nothing; a few edges' children take their side now.
+    if (input.edges.size() <= kFewEdges)
+      for (int32_t c = first; c < first + 4; ++c) quadrants[static_cast<size_t>(c)].status = old.status == QuadStatus::Undefined ? sideWhileBuilding(c) : old.status;
+    return true;
+  }
   for (int32_t c = first; c < first + 4; ++c) {
     if (old.vertex >= 0 && holdsPoint(c, input.vertices[static_cast<size_t>(old.vertex)]))
       quadrants[static_cast<size_t>(c)].vertex = old.vertex;
@@ -223,6 +240,10 @@ bool Quadtree::crossedByAnyEdge(int32_t q) const {
   for (uint32_t e = 0; e < input.edges.size(); ++e)
     if (input.active(e) && crossedBy(q, e)) return true;
   return false;
+}
+
+QuadStatus Quadtree::sideWhileBuilding(int32_t q) const {
+  return (*this)[q].level < uniformDepth && crossedByAnyEdge(q) ? QuadStatus::Undefined : castFromCentre(*this, q);
 }
 
 void Quadtree::edgesThrough(int32_t q, std::vector<uint32_t>& out) const {
@@ -304,10 +325,17 @@ bool Quadtree::canMerge(int32_t q) const {
 }
 
 void Quadtree::undoChanges(size_t keep) {
+  // The children of the splits taken back are the last quadrants made (the first of those splits
+  // made its children at the end of the array, the others after them): their room is reused.
+  size_t made = quadrants.size();
   while (changes.size() > keep) {
-    quadrants[static_cast<size_t>(changes.back().quadrant)] = changes.back().before;
+    const Change& change = changes.back();
+    Quadrant& quadrant = quadrants[static_cast<size_t>(change.quadrant)];
+    if (!change.isMerge()) made = std::min(made, static_cast<size_t>(quadrant.firstChild));
+    quadrant = change.before;
     changes.pop_back();
   }
+  quadrants.resize(made);
 }
 
 void Quadtree::merge(int32_t q) {
@@ -358,6 +386,14 @@ bool segmentCrossesOpenSquare(Vec2 a, Vec2 b, double x0, double y0, double x1, d
   // A chord of a square either lies in its border or runs through its inside: test its middle.
   const Vec2 m = a + d * (0.5 * (t0 + t1));
   return t0 <= t1 && x0 < m.x && m.x < x1 && y0 < m.y && m.y < y1;
+}
+
+bool Quadtree::madeBefore(int32_t a, int32_t b) const {
+  const Quadrant &qa = (*this)[a], &qb = (*this)[b];
+  const bool coarseA = qa.level <= uniformDepth, coarseB = qb.level <= uniformDepth;
+  if (coarseA != coarseB) return coarseA;
+  if (!coarseA) return a < b;
+  return qa.level != qb.level ? qa.level < qb.level : comesBefore(qa, qb);
 }
 
 std::vector<int32_t> Quadtree::leaves() const {
@@ -511,46 +547,132 @@ void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, Quad
   linkEdges();
 }
 
-std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap) {
+namespace {
+
+// The area of the polygon (tree units): outer ring counter-clockwise, holes clockwise.
+double inputArea(const QuadtreeInput& input) {
+  double twice = 0;
+  for (const auto& [a, b] : input.edges) twice += orient2(Vec2{0}, input.vertices[a], input.vertices[b]);
+  return twice / 2;
+}
+
+// Whether every input vertex lies at least `clearance` (tree units) from every edge that does
+// not end at it, found through the tree: the leaves near a vertex store the edges crossing them
+// (two at most each), and edges along grid lines, which lie along leaves' sides instead, are
+// looked up by their line. Work per vertex is bounded: leaves are no finer than a fraction of the
+// clearance (TreeFrame::finestLevel).
+bool verticesClearOfEdges(const Quadtree& tree, double clearance) {
+  const QuadtreeInput& in = tree.input;
+  struct OnLine {
+    double line, lo, hi;
+    uint32_t edge;
+    bool operator<(const OnLine& o) const { return line < o.line || (line == o.line && lo < o.lo); }
+  };
+  std::array<std::vector<OnLine>, 2> onLines;  // along x = line, along y = line
+  for (uint32_t e = 0; e < in.edges.size(); ++e) {
+    const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
+    for (int axis = 0; axis < 2; ++axis)  // the axis the line is across
+      if (a[axis] == b[axis] && a[axis] == std::round(a[axis]))
+        onLines[static_cast<size_t>(axis)].push_back({a[axis], std::min(a[1 - axis], b[1 - axis]), std::max(a[1 - axis], b[1 - axis]), e});
+  }
+  for (auto& lines : onLines) std::sort(lines.begin(), lines.end());
+  std::vector<int32_t> near;
+  for (uint32_t v = 0; v < in.vertices.size(); ++v) {
+    const Vec2 p = in.vertices[v];
+    bool clear = true;
+    auto check = [&](uint32_t e) {
+      const auto& [i, j] = in.edges[e];
+      if (i == v || j == v) return;
+      const Vec2 a = in.vertices[i], d = in.vertices[j] - a;
+      const double t = std::clamp(glm::dot(p - a, d) / glm::dot(d, d), 0.0, 1.0);
+      clear = clear && glm::length(p - (a + t * d)) >= clearance;
+    };
+    near.clear();
+    tree.leavesIn(p - Vec2{clearance}, p + Vec2{clearance}, near);
+    for (int32_t q : near) {
+      const Quadrant& leaf = tree[q];
+      for (uint8_t k = 0; k < leaf.edgeCount; ++k) check(leaf.edges[k]);
+      const double s = static_cast<double>(tree.edgeLength(leaf));
+      const Vec2 lo{static_cast<double>(leaf.x), static_cast<double>(leaf.y)};
+      for (int axis = 0; axis < 2; ++axis)
+        for (const double line : {lo[axis], lo[axis] + s}) {
+          const std::vector<OnLine>& lines = onLines[static_cast<size_t>(axis)];
+          // Edges on one line do not overlap: those along this side are consecutive.
+          auto at = std::partition_point(lines.begin(), lines.end(), [&](const OnLine& o) { return o.line < line || (o.line == line && o.hi < lo[1 - axis]); });
+          for (; at != lines.end() && at->line == line && at->lo <= lo[1 - axis] + s; ++at) check(at->edge);
+        }
+    }
+    if (!clear) return false;
+  }
+  return true;
+}
+
+// The last phase of a build: inside leaves coarser than the patch size (no vertex or edge met
+// them) split down to it, their quadrants all inside. How many that makes is known first.
+void splitInsideToUniformDepth(Quadtree& tree) {
+  std::vector<int32_t> coarse;
+  tree.leaves(coarse);
+  coarse.erase(std::remove_if(coarse.begin(), coarse.end(), [&](int32_t q) {
+                 return tree[q].status != QuadStatus::Inside || tree[q].level >= tree.uniformDepth;
+               }), coarse.end());
+  double toMake = 0;  // 4 + 16 + ... + 4^k for a leaf k levels coarser
+  for (int32_t q : coarse) toMake += (std::exp2(2 * (tree.uniformDepth - tree[q].level + 1)) - 4) / 3;
+  if (static_cast<double>(tree.quadrantsMade) + toMake > static_cast<double>(tree.quadrantBudget)) throw tooLarge(tree.quadrantBudget);
+  tree.quadrants.reserve(tree.quadrants.size() + static_cast<size_t>(toMake));
+  for (size_t i = 0; i < coarse.size(); ++i) {
+    const int32_t q = coarse[i];
+    tree.splitLeaf(q);
+    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c) {
+      tree.quadrants[static_cast<size_t>(c)].status = QuadStatus::Inside;
+      if (tree[c].level < tree.uniformDepth) coarse.push_back(c);
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap, int finestLevel) {
   Quadtree tree;
   tree.input = std::move(input);
-  if (!buildQuadtree(tree, maxDepth, depth, gridSnap)) return std::nullopt;
+  if (!buildQuadtree(tree, maxDepth, depth, gridSnap, finestLevel)) return std::nullopt;
   return tree;
 }
 
-bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
+bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap, int finestLevel) {
   // Deeper trees would lose exact quadrant corners, and overflow the walks' fixed stacks.
   if (maxDepth < 0 || maxDepth > kDeepestTree || depth < 0 || depth > maxDepth)
     throw std::invalid_argument("quadtree depth " + std::to_string(depth) + " of " + std::to_string(maxDepth) +
                                 " outside 0.." + std::to_string(kDeepestTree));
+  // The polygon's leaves at the patch size cover its area: their quadrants, about a third more,
+  // must fit the budget, or the polygon is refused before any is made (also a patch size finer
+  // than the coordinates resolve, for which a mesh would be too large first). The boundary's
+  // leaves, what a thin polygon needs, are counted as they are made.
+  const double cell = std::exp2(maxDepth - depth);
+  const double quadrantsForArea = 4.0 / 3 * std::abs(inputArea(tree.input)) / (cell * cell);
+  if (static_cast<double>(tree.quadrantsMade) + quadrantsForArea > static_cast<double>(tree.quadrantBudget))
+    throw tooLarge(tree.quadrantBudget);
   tree.maxDepth = maxDepth;
+  tree.finestLevel = finestLevel < 0 ? maxDepth : std::min(finestLevel, maxDepth);
+  if (depth > tree.finestLevel) return false;  // a patch size finer than the coordinates resolve
   tree.gridSnap = gridSnap;
   tree.complete = false;
   tree.changes.clear();
   tree.quadrants.clear();
-  tree.quadrants.reserve(size_t{4} << (2 * std::min(depth, 10)));
+  tree.quadrants.reserve(static_cast<size_t>(quadrantsForArea) + 64 * tree.input.vertices.size());
   tree.quadrants.push_back(Quadrant{});
   tree.uniformDepth = depth;
   tree.storageSplits.clear();
 
-  // Phases: the uniform tree of the patch size, then vertices, then edges (5.2). A polygon of few
+  // Phases: vertices, then edges, stored from the root (5.2), then the sides of the leaves, then
+  // the inside split down to the patch size. A quadrant coarser than the patch size holds
+  // nothing: one that a vertex or an edge meets is split. So the tree is uniform to the patch
+  // size inside the polygon and along its boundary, and a quadrant wholly outside stays as
+  // coarse as it is: a thin polygon's tree does not fill its root square. A polygon of few
   // edges has its leaves classified as they are made (classify.h): a square no edge crosses
-  // hands its side down; a leaf of the uniform tree that one crosses, or a leaf split to store,
-  // casts its own ray (edges stored make it Boundary).
+  // hands its side down, a leaf crossed below the patch size or split to store casts its own
+  // ray (edges stored make it Boundary).
   const bool fewEdges = tree.input.edges.size() <= kFewEdges;
-  auto sideOf = [&](int32_t q) {
-    return tree[q].level < depth && tree.crossedByAnyEdge(q) ? QuadStatus::Undefined : castFromCentre(tree, q);
-  };
-  if (fewEdges) tree.quadrants[0].status = sideOf(0);
-  // Made level by level, so the first quadrant at the uniform depth ends the phase.
-  for (size_t i = 0; i < tree.quadrants.size() && tree.quadrants[i].level < depth; ++i) {
-    const auto q = static_cast<int32_t>(i);
-    const QuadStatus side = tree[q].status;
-    tree.splitLeaf(q);
-    if (!fewEdges) continue;
-    for (int32_t c = tree[q].firstChild; c < tree[q].firstChild + 4; ++c)
-      tree.quadrants[static_cast<size_t>(c)].status = side == QuadStatus::Undefined ? sideOf(c) : side;
-  }
+  if (fewEdges) tree.quadrants[0].status = tree.sideWhileBuilding(0);
   for (uint32_t v = 0; v < tree.input.vertices.size(); ++v)
     if (!tree.insertVertex(v)) return false;
   for (uint32_t e = 0; e < tree.input.edges.size(); ++e)
@@ -564,6 +686,7 @@ bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap) {
   } else {
     classifyLeaves(tree);
   }
+  splitInsideToUniformDepth(tree);
   tree.complete = true;
   return true;
 }
@@ -579,19 +702,26 @@ void buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, Polygon
 }
 
 int setUpPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper) {
+  if (deeper == 0) into.tree.quadrantsMade = 0;
+  if (!(patchSize > 0)) throw std::invalid_argument("patch size " + std::to_string(patchSize) + " is not above 0");
   const double longerExtent = 1 / setupTreeFrame(polygon, 0).scale;  // a root of edge 1
   const int depth = initialDepth(longerExtent, patchSize, kDeepestTree);
   into.frame = setupTreeFrame(polygon, std::min(kDeepestTree, depth + 16 + deeper));
+  if (into.frame.finestLevel() < 0) throw tooFine();
   quadtreeInput(polygon, into.frame, into.tree.input);
   return depth;
 }
 
 void buildSetUpTree(const PolygonWithHoles& polygon, int depth, PolygonTree& into) {
-  while (!buildQuadtree(into.tree, into.frame.maxDepth, depth, into.frame.gridSnap)) {
-    if (into.frame.maxDepth == kDeepestTree) throw std::invalid_argument("polygon vertices cannot be separated (repeated or crossing)");
+  while (!buildQuadtree(into.tree, into.frame.maxDepth, depth, into.frame.gridSnap, std::max(0, into.frame.finestLevel()))) {
+    // A deeper tree has finer levels, unless the rounding stopped this one short: it stops a
+    // deeper one at the same size.
+    if (into.frame.maxDepth == kDeepestTree || into.tree.finestLevel < into.frame.maxDepth)
+      throw tooFine();
     into.frame = setupTreeFrame(polygon, std::min(kDeepestTree, into.frame.maxDepth + 8));
     quadtreeInput(polygon, into.frame, into.tree.input);
   }
+  if (!verticesClearOfEdges(into.tree, kClearanceOverRounding * into.frame.rounding)) throw tooFine();
 }
 
 }  // namespace mesher

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mesher/huge_page_allocator.h"
+#include "mesher/mesher.h"
 #include "mesher/tree_frame.h"
 #include "mesher/triangulate.h"
 
@@ -51,6 +52,7 @@ enum class Side : uint8_t { West, East, South, North };
 class Quadtree {
  public:
   int maxDepth = 0;
+  int finestLevel = 0;  // no leaf is split finer (TreeFrame::finestLevel): maxDepth, or coarser
   std::vector<Quadrant, HugePageAllocator<Quadrant>> quadrants;  // [0] is the root
   QuadtreeInput input;
   bool complete = false;  // every vertex and edge stored and every leaf classified
@@ -60,9 +62,19 @@ class Quadtree {
   // built: later splits and merges leave it as it is.
   std::vector<int32_t> storageSplits;
   double gridSnap = 1e-6;  // the frame's: computed points this close to a grid line lie on it
+  // The work limit (MeshSettings::maxQuadrants): making a quadrant past `quadrantBudget` throws
+  // MeshRefused. `quadrantsMade` counts every quadrant made since the caller last set it to 0
+  // (setUpPolygonTree does for each new polygon), also in trees rebuilt and splits taken back.
+  size_t quadrantsMade = 0;
+  size_t quadrantBudget = kMaxQuadrants;
 
   int64_t edgeLength(const Quadrant& q) const { return int64_t{1} << (maxDepth - q.level); }
   const Quadrant& operator[](int32_t q) const { return quadrants[static_cast<size_t>(q)]; }
+
+  // Whether quadrant a comes before quadrant b in the order the refiner visits leaves in, which
+  // decides its splits: quadrants no finer than the uniform depth level by level in tree order,
+  // then the finer ones in the order they were made (their index).
+  bool madeBefore(int32_t a, int32_t b) const;
 
   // Leaves only, in tree order (into `out`, replacing what it held).
   std::vector<int32_t> leaves() const;
@@ -90,17 +102,21 @@ class Quadtree {
   void forEachLeafWithAdjacent(Visit visit) const;
   // Whether an active input edge passes through quadrant q's open square (as stored edges do).
   bool crossedByAnyEdge(int32_t q) const;
+  // A new quadrant's side while the tree of a polygon of few edges is built (classify.h):
+  // Undefined when an edge crosses it coarser than the patch size (it will be split), else by a
+  // ray from its centre.
+  QuadStatus sideWhileBuilding(int32_t q) const;
   // Whether point p of leaf q's closed square lies inside the polygon, from the leaf's own
   // vertex and edges (its status when it holds none). p must not lie on a stored edge.
   bool insideAt(int32_t q, Vec2 p) const;
 
   // Splits leaf q into four, handing its vertex and edges down under the rules of 5.2 (splitting
-  // deeper where a child breaks one) and classifying the new leaves. False at the deepest level,
+  // deeper where a child breaks one) and classifying the new leaves. False at the finest level,
   // and when a child would have to go deeper than that: the split is then left part way, its
   // leaves missing edges, for the caller to take back (undoChanges).
   bool splitLeaf(int32_t q);
   // Stores vertex v / edge e in the leaves below quadrant q that hold it, splitting leaves whose
-  // rules it would break. False when that needs a level deeper than maxDepth.
+  // rules it would break. False when that needs a level finer than finestLevel.
   bool insertVertex(uint32_t v);
   bool insertEdge(int32_t q, uint32_t e);
 
@@ -120,7 +136,8 @@ class Quadtree {
     bool isMerge() const { return !before.isLeaf(); }
   };
   std::vector<Change> changes;
-  // Reverts the changes after the first `keep` (a split that ran out of depth part way).
+  // Reverts the changes after the first `keep` (a split that ran out of depth part way), and
+  // drops the quadrants their splits made.
   void undoChanges(size_t keep);
 
   // The leaves storing edge e, appended to `out` (work in proportion to the leaves it crosses).
@@ -159,20 +176,25 @@ Vec2 treePoint(const TreeFrame& frame, Vec2 plane);
 QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame);
 void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, QuadtreeInput& into);
 
-// Subdivides the root uniformly to `depth`, stores every vertex and edge under the rules of 5.2:
-// a leaf holds at most one distinct vertex (in its closed square); with a vertex, only edges
-// ending at it; without one, at most one edge. Leaves holding edges are Boundary; every other
-// leaf is Inside or Outside by its centre. Returns nothing when two vertices cannot be separated
-// within maxDepth levels (the caller builds a deeper tree: vertices are never merged).
-std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap = 1e-6);
+// Stores every vertex and edge under the rules of 5.2: a leaf holds at most one distinct vertex
+// (in its closed square); with a vertex, only edges ending at it; without one, at most one edge.
+// No leaf inside the polygon or on its boundary is coarser than `depth`; leaves wholly outside
+// may be. Leaves holding edges are Boundary; every other leaf is Inside or Outside by its centre.
+// Returns nothing when two vertices cannot be separated within maxDepth levels, or within
+// `finestLevel` (when given, and finer than the uniform depth), as TreeFrame::finestLevel says
+// (the caller builds a deeper tree, or gives up: vertices are never merged).
+std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap = 1e-6, int finestLevel = -1);
 // The same over `tree.input`, reusing the tree's memory; false where the first form gives nothing.
-// Both throw std::invalid_argument for a maxDepth above kDeepestTree (or depth outside 0..maxDepth).
-bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap);
+// Both throw std::invalid_argument for a maxDepth above kDeepestTree (or depth outside 0..maxDepth),
+// and MeshRefused when the polygon's area alone needs more quadrants at `depth` than the tree's
+// budget leaves, or when making them reaches it.
+bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap, int finestLevel = -1);
 
 // A polygon's tree for a patch size: the frame of 5.1, the depth of 5.2, and a maximum depth
 // that starts 16 + `deeper` levels below the patch size and grows by 8 (up to 50) whenever two
-// vertices cannot be separated. Throws std::invalid_argument for a polygon no depth can store
-// (repeated or crossing vertices).
+// vertices cannot be separated. Throws MeshRefused for a polygon no depth can store (repeated or
+// crossing vertices, or vertices nearer than the frame's finest level), or one whose tree would
+// pass the tree's quadrantBudget.
 struct PolygonTree {
   TreeFrame frame;
   Quadtree tree;
@@ -182,7 +204,8 @@ PolygonTree buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, 
 void buildPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper = 0);
 // buildPolygonTree in two steps, for a caller that looks at the tree's input first: the frame
 // and input of the first tree it tries, into `into` (returns the depth of 5.2); then the tree
-// itself, deepened as buildPolygonTree does.
+// itself, deepened as buildPolygonTree does. With `deeper` 0 (a new polygon) the work count
+// starts over.
 int setUpPolygonTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into, int deeper = 0);
 void buildSetUpTree(const PolygonWithHoles& polygon, int depth, PolygonTree& into);
 

@@ -46,13 +46,6 @@ constexpr int kPasses = 10;
 // buildPolygonTree deepens one whose vertices it cannot separate).
 constexpr int kDeeperTree = 8;
 
-// The smallest a deeper tree's finest leaf may be, over its rounding (TreeFrame::rounding): far
-// from the origin, 1e-12 of the polygon's coordinates. In 250,000 random polygons this leaves 2
-// elements below the bound, both in one polygon, and no invalid mesh; the finest leaf at 1e-8 of
-// the coordinates left 34 in 40,000, and no limit (trees 50 levels deep) 345 and three invalid
-// meshes, the smallest elements lost in rounding.
-constexpr double kFinestLeafOverRounding = 280;
-
 // How many levels below itself a short leaf without a vertex, or with one on its border, may be
 // split (one did in every random polygon that had one).
 constexpr int kShortLeafLevels = 3;
@@ -202,7 +195,7 @@ size_t QualityRefiner::splitCoarseTakers() {
     regions_.collectCoarseTakers(&takers_);
     for (int32_t q : leaves_) regions_.build(q);
     regions_.collectCoarseTakers(nullptr);
-    std::sort(takers_.begin(), takers_.end());
+    std::sort(takers_.begin(), takers_.end(), [&](int32_t a, int32_t b) { return tree.madeBefore(a, b); });
     takers_.erase(std::unique(takers_.begin(), takers_.end()), takers_.end());
     seeds_.clear();
     for (int32_t q : takers_) {
@@ -241,14 +234,17 @@ void QualityRefiner::collectVertexLeavesChangedSince(size_t mark) {
         if (tree[n].vertex >= 0) touched_.emplace_back(n, i);
     }
   }
-  std::sort(touched_.begin(), touched_.end());
-  std::sort(verified_.begin(), verified_.end());
+  const auto before = [&](const std::pair<int32_t, size_t>& a, const std::pair<int32_t, size_t>& b) {
+    return a.first != b.first ? tree.madeBefore(a.first, b.first) : a.second < b.second;
+  };
+  std::sort(touched_.begin(), touched_.end(), before);
+  std::sort(verified_.begin(), verified_.end(), before);
   leaves_.clear();
   for (size_t k = 0; k < touched_.size(); ++k) {
     const auto [q, lastSplit] = touched_[k];
     if (k + 1 < touched_.size() && touched_[k + 1].first == q) continue;
     // Left out when it reached the bound after the last split that touched it.
-    const auto after = std::upper_bound(verified_.begin(), verified_.end(), std::pair{q, lastSplit});
+    const auto after = std::upper_bound(verified_.begin(), verified_.end(), std::pair{q, lastSplit}, before);
     if (after == verified_.end() || after->first != q) leaves_.push_back(q);
   }
 }
@@ -327,10 +323,11 @@ void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTre
   into.tree.changes.clear();
 }
 
-PolygonTree buildMeshTree(const PolygonWithHoles& polygon, double patchSize) {
+PolygonTree buildMeshTree(const PolygonWithHoles& polygon, const MeshSettings& settings) {
   PolygonTree built;
+  built.tree.quadrantBudget = settings.maxQuadrants;
   std::optional<QualityRefiner> refiner;
-  buildMeshTree(polygon, patchSize, built, refiner);
+  buildMeshTree(polygon, settings.patchSize, built, refiner);
   return built;
 }
 

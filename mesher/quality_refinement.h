@@ -81,10 +81,11 @@ size_t refineForQuality(PolygonTree& built);
 // ran out of depth), and no changes left recorded. `refiner` is
 // made over `into` when empty and kept for the next polygon. A `setUpDepth` of 0 or more says
 // that `into` holds the first tree's frame and input already (setUpPolygonTree gave that depth).
-// Throws std::invalid_argument as buildPolygonTree does.
+// Throws MeshRefused as buildPolygonTree does, also when the quality splits pass the tree's
+// quadrantBudget.
 void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
                    std::optional<QualityRefiner>& refiner, int setUpDepth = -1);
-// The same into a new tree.
-PolygonTree buildMeshTree(const PolygonWithHoles& polygon, double patchSize);
+// The same into a new tree, within the settings' work limit.
+PolygonTree buildMeshTree(const PolygonWithHoles& polygon, const MeshSettings& settings);
 
 }  // namespace mesher

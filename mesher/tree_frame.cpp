@@ -42,6 +42,12 @@ Vec2 TreeFrame::toPlane(Vec2 tree) const {
   return origin + xAxis * tree.x + yAxis() * tree.y;
 }
 
+int TreeFrame::finestLevel() const {
+  if (!std::isfinite(scale * stretch) || !std::isfinite(rounding)) return -1;
+  const double coarser = std::ceil(std::log2(kFinestLeafOverRounding * rounding));
+  return maxDepth - static_cast<int>(std::clamp(coarser, 0.0, maxDepth + 1.0));
+}
+
 Vec2 TreeFrame::planePerTree() const {
   Vec2 perUnit{1 / scale, 1 / scale};
   perUnit[shortAxis] /= stretch;
@@ -88,6 +94,8 @@ TreeFrame setupTreeFrame(const PolygonWithHoles& polygon, int maxDepth) {
 
 int initialDepth(double longerExtent, double patchSize, int maxDepth) {
   const double depth = std::ceil(std::log2(longerExtent / patchSize));
+  // NaN, from a frame without extent (a ring of no area), is no depth: the frame is refused.
+  if (std::isnan(depth)) return 0;
   return static_cast<int>(std::clamp(depth, 0.0, static_cast<double>(maxDepth)));
 }
 

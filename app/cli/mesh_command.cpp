@@ -3,6 +3,7 @@
 #include "app/cli/import_stats.h"
 #include "app/image/atomic_file.h"
 #include "engine/gltf_loader.h"
+#include "engine/meshed_scene.h"
 #include "engine/polygon_case.h"
 #include "engine/scene_loader.h"
 #include "engine/surface_mesh.h"
@@ -76,7 +77,11 @@ int runMesh(const MeshOptions& options) {
     const engine::PolygonCase polygonCase = engine::parsePolygonCase(root, in);
     const double patch = engine::casePatchSize(polygonCase, options.patchSize, in);
     mesher::Mesh mesh;
-    meshMs = bestOf(options.repeat, [&] { mesh = mesher::meshPolygon(polygonCase.polygon, {patch}); });
+    try {
+      meshMs = bestOf(options.repeat, [&] { mesh = mesher::meshPolygon(polygonCase.polygon, {patch}); });
+    } catch (const mesher::MeshRefused& refused) {
+      throw engine::meshRefusal(refused, options.input, "outer");
+    }
     tally.add(polygonCase.polygon, mesh);
     if (!options.dump.empty()) {
       dump["vertices"] = OrderedJson::array();
@@ -88,12 +93,8 @@ int runMesh(const MeshOptions& options) {
     engine::Scene scene = gltf ? engine::loadScene(options.input, options.load) : engine::parseScene(text, options.input);
     imported = importStats(scene);
     if (options.patchSize) engine::overridePatchSize(scene, *options.patchSize);
-    std::vector<engine::SurfaceMesh> meshes(scene.surfaces.size());
-    meshMs = bestOf(options.repeat, [&] {
-      mesher::Mesher mesher;
-      for (size_t i = 0; i < scene.surfaces.size(); ++i) meshes[i] = engine::meshSurface(scene.surfaces[i], mesher);
-      repeats = mesher.repeats();
-    });
+    std::vector<engine::SurfaceMesh> meshes;
+    meshMs = bestOf(options.repeat, [&] { meshes = engine::meshScene(scene, &repeats).surfaces; });
     for (const engine::SurfaceMesh& m : meshes) tally.add(m.polygon, m.mesh);
     if (!options.dump.empty()) {
       dump["vertices"] = OrderedJson::array();

@@ -117,6 +117,20 @@ walkrad_cli_test(mesh_polygon_tiny_patch_size 2 ARGS mesh ${cli_dir}/wall_with_w
                  STDERR "wall_with_window.json: --patch-size: patch size too small for the scene")
 walkrad_cli_test(mesh_polygon_file_tiny_patch_size 2 ARGS mesh ${cli_dir}/tiny_patch_size.json
                  STDERR "tiny_patch_size.json: patch_size: patch size too small for the scene")
+# Within that limit, a mesh past the mesher's work limit (mesher.h) is refused before it is made,
+# naming the surface: a patch size just over the scene limit, for a polygon case and a scene.
+walkrad_cli_test(mesh_polygon_patch_size_near_limit 2 ARGS mesh ${cli_dir}/wall_with_window.json --patch-size 0.0025
+                 STDERR "wall_with_window.json: outer: mesh too large")
+walkrad_cli_test(render_patch_size_near_limit 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/near.png --patch-size 0.006
+                 STDERR "cornell.json: objects\\[0\\]\\.solids\\[0\\]: mesh too large" NO_FILE ${out}/near.png)
+# Issue 19's thin polygons: a needle 0.375 wide and 1.7 million long is refused as its tree
+# reaches the limit (it meshed for over 20 s); a comb of 50 teeth meshes without T-vertices or
+# elements below the angle bound (it had 42, and an angle of 0 degrees).
+walkrad_cli_test(mesh_needle_refused 2 ARGS mesh ${cli_dir}/needle.json STDERR "needle.json: outer: mesh too large")
+# Vertices 1e-10 apart 1e5 from the origin: closer than the mesh's points resolve there.
+walkrad_cli_test(mesh_hair_apart_far 2 ARGS mesh ${cli_dir}/hair_apart_far.json
+                 STDERR "hair_apart_far.json: outer: detail finer than the coordinates resolve")
+walkrad_cli_test(mesh_comb 0 ARGS mesh ${cli_dir}/comb50.json STDOUT " 0 T-vertices, smallest angle 21.80 deg \\(0 elements below")
 
 # --move: after converging, an object moves through the edit path and the light converges again.
 # Its statistics give each move's figures, as README lists them.

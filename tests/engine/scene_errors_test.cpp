@@ -1,5 +1,6 @@
 // Every way a scene can break spec/scene-format.md is refused with its diagnostic and the JSON
 // path of the problem, and nothing is returned.
+#include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
 #include "tests/engine/test_scenes.h"
 
@@ -288,6 +289,21 @@ TEST(SceneErrorsText, TooManyFacesAreRefusedBeforeTheyAreMade) {
   }
 }
 
+// A patch size within the scene's limit (100,000 patches along its extent) whose mesh would pass
+// the mesher's work limit is refused when the scene is meshed, naming the surface, at once.
+TEST(SceneErrorsText, AMeshPastTheMeshersLimitIsRefusedAtItsSurface) {
+  Json j = test::baseScene();
+  room(j)["faces"]["top"]["patch_size"] = 1e-4;  // 4 x 3 at 1e-4: over a billion elements
+  const Scene scene = parseScene(j.dump(), "fine.json");
+  try {
+    meshScene(scene);
+    ADD_FAILURE() << "meshed";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.diag(), Diag::MeshTooLarge) << e.what();
+    EXPECT_EQ(e.place(), "objects[0].solids[0].faces.top") << e.what();
+  }
+}
+
 // A test per way of breaking a scene: every diagnostic of the table is produced above.
 TEST(SceneErrorsText, EveryDiagnosticHasACase) {
   std::set<Diag> covered{Diag::NotJson, Diag::FileUnreadable, Diag::DuplicateKey, Diag::TooManyFaces};  // the tests above
@@ -296,6 +312,8 @@ TEST(SceneErrorsText, EveryDiagnosticHasACase) {
   // glTF models' own: gltf_errors_test.cpp has a case for each.
   covered.insert({Diag::NotGltf, Diag::BadGltfReference, Diag::BadAccessor, Diag::NodeLoop, Diag::NoTriangles,
                   Diag::UnknownNode, Diag::GltfOnly, Diag::UriAbsolute, Diag::UriOutsideFolder, Diag::WrongByteLength});
+  // The mesher's refusals: the test above, and cli.mesh_hair_apart_far (a polygon case).
+  covered.insert({Diag::MeshTooLarge, Diag::MeshTooFine});
   for (const ErrorCase& c : kCases) covered.insert(c.diag);
 #define WALKRAD_EXPECT_COVERED(id, text) EXPECT_TRUE(covered.count(Diag::id)) << #id " has no test";
   WALKRAD_SCENE_DIAGNOSTICS(WALKRAD_EXPECT_COVERED)

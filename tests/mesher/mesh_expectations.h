@@ -13,7 +13,7 @@ namespace mesher::test {
 // Tiles the polygon exactly with convex counter-clockwise elements, no T-vertex, no overlap;
 // with `inputFirst`, the polygon's own points come first in the vertex list, unmoved.
 inline void expectValidMesh(const MeshCheck& c, bool inputFirst = true) {
-  EXPECT_NEAR(c.elementArea, c.polygonArea, 1e-9 * c.polygonArea);
+  EXPECT_NEAR(c.elementArea, c.polygonArea, c.areaTolerance);
   EXPECT_EQ(c.notCounterClockwiseOrConvex, 0u);
   if (inputFirst) {
     EXPECT_EQ(c.movedInputVertices, 0u);

@@ -81,22 +81,30 @@ TEST(MeshMemo, WithoutMemoryNothingIsARepeat) {
   EXPECT_EQ(mesher.repeats(), 0u);
 }
 
-// Random polygons, each met three times, through a memory that fills and starts over again and
+// Random polygons and rooms of many sizes (each its own tree input, each mesh of about the same
+// size), met forward and then backward, through a memory that fills and starts over again and
 // again: every mesh is the one meshing gives.
 TEST(MeshMemo, AFullMemoryStartsOverAndMeshesStayExact) {
   std::mt19937 random(17);
-  std::vector<PolygonWithHoles> polygons;
-  for (int trial = 0; trial < 40; ++trial)
-    polygons.push_back(trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial));
-  Mesher mesher(4000);  // keeps meshes of up to 250 elements, 4,000 in all
+  std::vector<std::pair<PolygonWithHoles, double>> polygons;  // with the patch size
+  for (int trial = 0; trial < 40; ++trial) {
+    polygons.emplace_back(trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial),
+                          4 + trial % 5);
+    const double scale = 1 + trial / 64.0;
+    polygons.emplace_back(mapped(room(), [&](Vec2 p) { return p * scale; }), 24 * scale);
+  }
+  const size_t roomElements = meshPolygon(polygons[1].first, {polygons[1].second}).elements.size();
+  const size_t capacity = 16 * roomElements;  // keeps a room's mesh, sixteen in all
+  Mesher mesher(capacity);
   size_t met = 0;
-  for (int round = 0; round < 3; ++round)
-    for (size_t i = 0; i < polygons.size(); ++i) {
+  for (int round = 0; round < 2; ++round)
+    for (size_t k = 0; k < polygons.size(); ++k) {
+      const size_t i = round == 0 ? k : polygons.size() - 1 - k;
       SCOPED_TRACE(testing::Message() << "round " << round << ", polygon " << i);
-      const double patch = 4 + static_cast<double>(i % 5);
-      const Mesh mesh = mesher.mesh(polygons[i], {patch});
-      expectFreshMesh(mesh, polygons[i], patch);
-      met += round > 0 && mesh.elements.size() <= 250;
+      const auto& [polygon, patch] = polygons[i];
+      const Mesh mesh = mesher.mesh(polygon, {patch});
+      expectFreshMesh(mesh, polygon, patch);
+      met += round > 0 && mesh.elements.size() <= capacity / 16;
     }
   EXPECT_GT(mesher.repeats(), 0u);
   EXPECT_LT(mesher.repeats(), met);  // some were forgotten when the memory filled

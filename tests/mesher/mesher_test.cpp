@@ -4,6 +4,7 @@
 #include "mesher/adaptive_mesh.h"
 #include "mesher/mesh_check.h"
 
+#include "tests/mesher/hostile_polygons.h"
 #include "tests/mesher/mesh_expectations.h"
 #include "tests/mesher/random_polygons.h"
 #include "tests/mesher/scene_polygons.h"
@@ -16,6 +17,8 @@
 
 namespace mesher {
 namespace {
+
+using test::regularPolygon;
 
 // Elements meshed and, of them, those below the angle bound (other than at sharper input corners).
 struct Quality {
@@ -60,15 +63,6 @@ TEST(Mesher, RandomPolygonsWithHoles) {
     expectGoodMesh(randomPolygon.polygon, randomPolygon.patchSize, &quality);
   }
   EXPECT_EQ(quality.belowAngleBound, 0u) << "of " << quality.elements << " elements";
-}
-
-Ring2 regularPolygon(Vec2 center, double radius, int sides, double turnDeg) {
-  Ring2 ring;
-  for (int i = 0; i < sides; ++i) {
-    const double a = (turnDeg + 360.0 * i / sides) * std::numbers::pi / 180;
-    ring.push_back(center + radius * Vec2{std::cos(a), std::sin(a)});
-  }
-  return ring;
 }
 
 TEST(Mesher, RandomConcavePolygons) {

@@ -1,8 +1,11 @@
 #include "mesher/polygon.h"
 
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
-#include <gtest/gtest.h>
+#include <random>
 
 namespace mesher {
 namespace {
@@ -43,6 +46,63 @@ TEST(Polygon, SimplicityCatchesBowtiesRepeatsAndFoldBacks) {
   EXPECT_FALSE(isSimple({{0, 0}, {2, 0}, {2, 0}, {2, 2}}));          // repeated point
   EXPECT_FALSE(isSimple({{0, 0}, {2, 0}, {1, 0}, {1, 2}}));          // edge folds back
   EXPECT_FALSE(isSimple({{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}}));  // vertex on an edge
+}
+
+// isSimple sweeps the ring's edges (n log n); every pair of edges, tested as it once was, is the
+// reference. Points on a small grid make rings that cross, touch, repeat a point, run along each
+// other or are simple; stars of many points and circles are simple or nearly.
+bool simpleByEveryPair(const Ring2& ring) {
+  const size_t n = ring.size();
+  if (n < 3) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (ring[i] == ring[(i + 1) % n]) return false;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      if (j == i + 1 || (i == 0 && j == n - 1)) {
+        const size_t shared = j == i + 1 ? j : i;
+        const Vec2 s = ring[shared], p = ring[(shared + n - 1) % n], q = ring[(shared + 1) % n];
+        if (orient2(p, s, q) == 0 && glm::dot(p - s, q - s) > 0) return false;
+        continue;
+      }
+      if (segmentsIntersect(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return false;
+    }
+  return true;
+}
+
+TEST(Polygon, SimplicityAgreesWithTestingEveryPairOfEdges) {
+  std::mt19937 random(21);
+  std::uniform_int_distribution<int> grid(0, 6);
+  size_t simple = 0, trials = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Ring2 ring;
+    const int n = 3 + trial % 9;
+    for (int i = 0; i < n; ++i) ring.push_back({grid(random), grid(random)});
+    ASSERT_EQ(isSimple(ring), simpleByEveryPair(ring)) << "trial " << trial;
+    simple += isSimple(ring), ++trials;
+  }
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 3 + trial % 200;
+    Ring2 ring;
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * std::numbers::pi * (i + 0.999 * unit(random)) / n, r = trial % 2 ? 1 : 0.05 + unit(random);
+      ring.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    if (trial % 3 == 0) ring[static_cast<size_t>(n / 2)] = ring[0] + 0.5 * (ring[1] - ring[0]);  // a point on an edge
+    ASSERT_EQ(isSimple(ring), simpleByEveryPair(ring)) << "star " << trial;
+    simple += isSimple(ring), ++trials;
+  }
+  EXPECT_GT(simple, trials / 10);  // both kinds of ring are common
+  EXPECT_LT(simple, trials - trials / 10);
+}
+
+// A ring of a hundred thousand points is checked in n log n: this took minutes pair by pair.
+TEST(Polygon, SimplicityOfAHundredThousandPointCircle) {
+  Ring2 circle;
+  for (int i = 0; i < 100000; ++i) circle.push_back({std::cos(2 * std::numbers::pi * i / 100000), std::sin(2 * std::numbers::pi * i / 100000)});
+  EXPECT_TRUE(isSimple(circle));
+  std::swap(circle[1000], circle[60000]);  // two spikes across the circle cross each other
+  EXPECT_FALSE(isSimple(circle));
 }
 
 TEST(Polygon, StrictlyInsideHonoursTheMargin) {

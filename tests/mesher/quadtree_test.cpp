@@ -125,11 +125,27 @@ TEST(Quadtree, ARectangleHasNoBoundaryQuadrants) {
   for (int32_t index : built.tree.leaves()) {
     const Quadrant& q = built.tree.quadrants[static_cast<size_t>(index)];
     EXPECT_NE(q.status, QuadStatus::Boundary);
+    if (q.status == QuadStatus::Outside) continue;
     EXPECT_EQ(q.level, built.tree.uniformDepth);  // nothing forced deeper
-    inside += q.status == QuadStatus::Inside;
+    ++inside;
   }
   EXPECT_EQ(inside, 8 * 4);  // 32 x 12 at patch 4: 8 along x, 4 (a power of two) along y
   expectRulesHold(built.tree);
+}
+
+// Quadrants wholly outside the polygon are not split to the patch size: a long thin polygon's
+// tree grows with the polygon's leaves (here 1,024 x 2: the short side is stretched to a power of
+// two), not with its root square (1,024 x 1,024 leaves).
+TEST(Quadtree, OutsideQuadrantsStayCoarse) {
+  const PolygonWithHoles strip{{{0, 0}, {1000, 0}, {1000, 1}, {0, 1}}, {}};
+  const PolygonTree built = buildPolygonTree(strip, 1);
+  EXPECT_EQ(built.tree.uniformDepth, 10);
+  size_t inside = 0;
+  for (int32_t index : built.tree.leaves()) inside += built.tree[index].status == QuadStatus::Inside;
+  EXPECT_EQ(inside, 2 * 1024u);
+  EXPECT_LT(built.tree.quadrants.size(), 3 * 2 * 1024u);
+  expectRulesHold(built.tree);
+  expectClassification(built, strip);
 }
 
 TEST(Quadtree, NoLeafIsLargerThanThePatchSize) {

@@ -61,7 +61,7 @@ TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
 // until the strip meshes within the bound. (Three levels left an element of 0.19 degrees.)
 TEST(QualityRefinement, ACornerAHairFromASideIsSplitUntilTheStripMeshes) {
   const PolygonWithHoles polygon = notchCornerIn(0.6, 0.002);
-  const PolygonTree built = buildMeshTree(polygon, 4);
+  const PolygonTree built = buildMeshTree(polygon, {4});
   const Vec2 corner = built.tree.input.vertices[3];
   EXPECT_GE(built.tree[built.tree.leafAt(corner)].level, built.tree.uniformDepth + 6);
   EXPECT_TRUE(cornerLeafReachesBound(built, corner));
@@ -83,7 +83,7 @@ TEST(QualityRefinement, ACornerAHairFromASideMaySplitMoreThanTwelveLevels) {
 // split further. (Elements of 0.2 to 9 degrees were left there.)
 TEST(QualityRefinement, ACornerAtTheDeepestLevelGetsADeeperTree) {
   const PolygonWithHoles polygon = test::randomTestPolygon(2016, false, 359).polygon;
-  EXPECT_GT(buildMeshTree(polygon, 44).tree.maxDepth, buildPolygonTree(polygon, 44).tree.maxDepth);
+  EXPECT_GT(buildMeshTree(polygon, {44}).tree.maxDepth, buildPolygonTree(polygon, 44).tree.maxDepth);
   expectMeshedWithinTheBound(polygon, 44);
 }
 
@@ -226,7 +226,7 @@ TEST(QualityRefinement, ASplitThatRunsOutOfDepthIsTakenBack) {
   const PolygonWithHoles spike{{{70.27, 29.2}, {46, 34}, {30.1358, 21.231}, {10.7905, 47.2521}, {21, 22}, {19, -2}, {-2.782, -15.9427},
                                 {21, -7.7}, {9, -26}, {10.985, -42.57}, {39, -38}, {69.23, -36.655}, {68, -6}, {64, 1}},
                                {}};
-  const PolygonTree built = buildMeshTree(spike, 23);
+  const PolygonTree built = buildMeshTree(spike, {23});
   const Vec2 tip = built.tree.input.vertices[6];
   EXPECT_EQ(built.tree[built.tree.leafAt(tip)].vertex, 6);
   EXPECT_GT(built.tree.maxDepth, buildPolygonTree(spike, 23).tree.maxDepth);

@@ -27,8 +27,7 @@ int main(int argc, char** argv) {
   test::forEachSweepPolygon(first, seeds, [&](const test::RandomTestPolygon& random, unsigned seed, bool concave, int trial) {
     const Mesh mesh = mesher.mesh(random.polygon, {random.patchSize});
     const MeshCheck c = checkMesh(random.polygon, mesh);
-    const bool bad = c.tVertices || c.notCounterClockwiseOrConvex || c.movedInputVertices || c.unmatchedInnerEdges ||
-                     c.repeatedEdges || std::abs(c.elementArea - c.polygonArea) > 1e-9 * c.polygonArea;
+    const bool bad = !valid(c);
     if (c.belowAngleBound || bad)
       std::printf("seed %u %s trial %d: %zu below the bound%s\n", seed, concave ? "concave" : "with holes", trial, c.belowAngleBound,
                   bad ? ", invalid" : "");
