@@ -543,7 +543,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
       f.front = glm::dvec3(k.value);
     } else if (k.integrated()) {
       const NearPlanSize size = plans.sizes[plan++];
-      applyPlan(nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
+      applyPlan(trees[p], nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
                 receiver[j], f.front, f.back);
       step += size.steps;
       factor += size.factors;
