@@ -146,9 +146,13 @@ class Solver {
   // threads); the solver is then half-way through a shot and must be thrown away.
   bool step();
 
-  // Unshot power over emitted power, summed over channels; 0 for a scene that emits nothing.
+  // Unshot power over emitted power, each patch's channels counted by magnitude (some light is
+  // negative after an edit or with overshooting); 0 for a scene that emits nothing. Take-backs
+  // still pending after an edit are not light yet: only a bound of what they will move is known
+  // before they are done (several times the emitted power after a desk moves in the office).
   double unshotFraction() const;
-  bool converged(double fraction) const { return unshotFraction() <= fraction; }
+  // Nothing left to take back, and the unshot fraction at most `fraction`.
+  bool converged(double fraction) const { return pendingCorrections() == 0 && unshotFraction() <= fraction; }
   // The unshot power per channel, signed (after an edit some light is negative), without the
   // corrections still pending: the term of the power ledgers (Stats).
   glm::dvec3 unshotPower() const;
@@ -182,8 +186,8 @@ class Solver {
   // nothing behind. A patch that did not change makes its new frame from its kept one and the
   // part of its hemisphere where the changed elements are seen
   // (SolverSettings::windowedCorrections). Take-backs
-  // come first in step(), the most powerful first; until done, the share of a patch's light
-  // that can reach the changed elements counts as unshot. Take-backs left from an earlier edit
+  // come first in step(), the most powerful first; until done, the solver has not converged.
+  // Take-backs left from an earlier edit
   // are done first (here). Throws std::invalid_argument for another number of surfaces, or as
   // the constructor does.
   void edit(std::span<const Surface> surfaces);

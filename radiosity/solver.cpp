@@ -802,7 +802,6 @@ struct Solver::Edit {
     double power = 0;    // the part of its shot power that can change course, summed over channels
   };
   std::vector<TakeBack> pending;  // least power first: taken from the back
-  double pendingPower = 0;
   std::vector<uint32_t> elements, patches;  // scratch of one correction
 
   // What changed, for corrections in a window (frameInWindow).
@@ -1042,7 +1041,6 @@ void Solver::edit(std::span<const Surface> surfaces) {
                            clusterReach(eye, up, si, size)});
     if (share > 0) {
       edit->pending.push_back({p, power * share});
-      edit->pendingPower += power * share;
       continue;
     }
     // It sees nothing of the change and sees what it saw: the point it chose and its frame stand.
@@ -1071,7 +1069,6 @@ bool Solver::correct() {
   if (!edit_ || edit_->pending.empty()) return false;
   const Edit::TakeBack t = edit_->pending.back();
   edit_->pending.pop_back();
-  edit_->pendingPower -= t.power;
   State& now = *state_;
   takeBack(t.patch);
   const bool windowed = frameInWindow(t.patch);
@@ -1509,8 +1506,7 @@ double Solver::unshotFraction() const {
   const State& s = *state_;
   const double emitted = channelSum(s.stats.emittedPower);
   if (emitted <= 0) return 0;
-  // Light still to be taken back after an edit counts as unshot.
-  double unshotPower = edit_ ? edit_->pendingPower : 0;
+  double unshotPower = 0;
   for (size_t p = 0; p < s.unshot.size(); ++p) unshotPower += kPi * channelSum(s.unshot[p]) * s.patchArea[p];
   return unshotPower / emitted;
 }

@@ -26,7 +26,13 @@ TEST(RadiosityEdit, AMovedBoardGivesWhatAFreshSolveGives) {
   const double before = solver.unshotFraction();
   solver.edit(roomWithBoard(0.25, 0.4));
   EXPECT_GT(solver.pendingCorrections(), 0u);
-  EXPECT_GT(solver.unshotFraction(), before);  // the light still to correct counts as unshot
+  // The take-backs to do keep it from converging, and count as unshot light only once done: on
+  // main their bound counted at once (185% of emitted here, 195% after the office's desk moved).
+  EXPECT_FALSE(solver.converged(before));
+  EXPECT_EQ(solver.unshotFraction(), before);
+  double most = 0;
+  while (solver.pendingCorrections() > 0 && solver.step()) most = std::max(most, solver.unshotFraction());
+  EXPECT_LT(most, 0.5);
   const uint64_t shotsBefore = solver.stats().shots;
   solver.solve(1e-3);
   EXPECT_EQ(solver.pendingCorrections(), 0u);
@@ -35,9 +41,9 @@ TEST(RadiosityEdit, AMovedBoardGivesWhatAFreshSolveGives) {
   Solver fresh(roomWithBoard(0.25, 0.4));
   fresh.solve(1e-3);
   const double error = meanDifference(solver, fresh);
-  std::printf("moved board: %llu corrections and %llu shots after the edit (a fresh solve: %llu shots); "
-              "difference %.3f%%\n",
-              static_cast<unsigned long long>(solver.stats().corrections),
+  std::printf("moved board: %llu corrections (unshot at most %.1f%% meanwhile) and %llu shots after the edit (a "
+              "fresh solve: %llu shots); difference %.3f%%\n",
+              static_cast<unsigned long long>(solver.stats().corrections), 100 * most,
               static_cast<unsigned long long>(solver.stats().shots - shotsBefore),
               static_cast<unsigned long long>(fresh.stats().shots), 100 * error);
   EXPECT_LT(error, 0.01);
