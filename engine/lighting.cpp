@@ -208,6 +208,7 @@ void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
   const radiosity::Stats& stats = solver.stats();
   snapshot->shots = stats.shots;
   snapshot->unshotFraction = solver.unshotFraction();
+  snapshot->pendingCorrections = solver.pendingCorrections();
   snapshot->solveSeconds = stats.seconds;
   snapshot->shotsPerSecond = stats.seconds > 0 ? static_cast<double>(stats.shots) / stats.seconds : 0;
   snapshot->elements = solver.elementCount();

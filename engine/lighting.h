@@ -54,6 +54,7 @@ struct LightingSnapshot {
   std::vector<glm::vec3> radiance;     // per display vertex (displayRadiance)
   uint64_t shots = 0;
   double unshotFraction = 1;           // unshot over emitted energy
+  size_t pendingCorrections = 0;       // take-backs of an edit still to do (Solver::edit)
   double solveSeconds = 0;             // time spent shooting
   double shotsPerSecond = 0;
   size_t elements = 0, patches = 0;

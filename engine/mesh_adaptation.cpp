@@ -120,8 +120,7 @@ bool MeshAdaptation::adaptIfDue(radiosity::Solver& solver, double converge) {
   if (converged ? convergedPasses_ >= kMaxConvergedPasses : fraction > nextPassAt_) return false;
   const bool changed = pass(solver) > 0;
   if (converged) convergedPasses_ = changed ? convergedPasses_ + 1 : kMaxConvergedPasses;
-  // From the light before the pass: the pass's take-backs count as unshot until done, and may
-  // count more than was emitted (they move light of several bounces).
+  // From the light before the pass: the light its take-backs move shows only once they are done.
   nextPassAt_ = kPassFall * fraction;
   return changed;
 }

@@ -101,70 +101,74 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
     for (size_t c = 0; c + 1 < cuts.size(); ++c) addNode(cuts[c], cuts[c + 1]);
   }
 
-  for (uint32_t e : elements) {
-    tree.plane.push_back(planeOf(e));
-    tree.spread.push_back(areaMoments(receivers[e].polygon, receivers[e].centre, x, y));
+  // Each node's points: the Gauss points of its area's second moments about its centroid, and
+  // the axes that measure the light's first moment along them. Its area's moments (about the
+  // tree's origin) are its children's summed: bottom up, as breadth-first order puts children
+  // after their parent. A leaf counts by its own integral and needs no points.
+  for (uint32_t e : elements) tree.plane.push_back(planeOf(e));
+  struct Moments {
+    double area = 0;
+    glm::dvec2 first{0};
+    glm::dvec3 second{0};  // uu, uv, vv
+  };
+  std::vector<Moments> moments(tree.nodes.size());
+  for (size_t n = tree.nodes.size(); n-- > 0;) {
+    PatchTree::Node& node = tree.nodes[n];
+    Moments& m = moments[n];
+    if (node.children == 0) {
+      const Receiver& e = receivers[elements[node.first]];
+      const glm::dvec2 p = tree.plane[node.first];
+      m = {e.area, e.area * p, e.area * (glm::dvec3(p.x * p.x, p.x * p.y, p.y * p.y) + areaMoments(e.polygon, e.centre, x, y))};
+      continue;
+    }
+    for (uint32_t c = node.child; c < node.child + node.children; ++c)
+      m.area += moments[c].area, m.first += moments[c].first, m.second += moments[c].second;
+    const glm::dvec2 mean = m.first / m.area;
+    const glm::dvec3 c = m.second / m.area - glm::dvec3(mean.x * mean.x, mean.x * mean.y, mean.y * mean.y);
+    // The covariance's principal axes: a rectangle gets its 2 x 2 Gauss points.
+    const double half = 0.5 * (c.x + c.z), difference = 0.5 * (c.x - c.z);
+    const double root = std::sqrt(difference * difference + c.y * c.y);
+    glm::dvec2 axis{difference + root, c.y};
+    const double length = glm::length(axis);
+    axis = length > 0 ? axis / length : glm::dvec2(0, 1);
+    const double major = std::sqrt(std::max(half + root, 0.0)), minor = std::sqrt(std::max(half - root, 0.0));
+    const glm::dvec3 u = major * (axis.x * x + axis.y * y), v = minor * (axis.x * y - axis.y * x);
+    const glm::dvec3 at = tree.origin + mean.x * x + mean.y * y;
+    node.points = {at - u - v, at + u - v, at + u + v, at - u + v};
+    node.mean = mean;
+    node.axes[0] = major > 0 ? axis / major : glm::dvec2(0);
+    node.axes[1] = minor > 0 ? glm::dvec2(-axis.y, axis.x) / minor : glm::dvec2(0);
   }
   return tree;
 }
 
 void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, std::vector<NodeLight>& out) {
+  // Per node, its weight and its light's first moment about the tree's origin (per channel, along
+  // u and v): its children's summed, bottom up.
   out.resize(tree.nodes.size());
-  for (size_t n = 0; n < tree.nodes.size(); ++n) {
+  for (size_t n = tree.nodes.size(); n-- > 0;) {
     const PatchTree::Node& node = tree.nodes[n];
     NodeLight& light = out[n];
-    light.weight = glm::dvec3(0);
-    light.sets = 1;
-    for (int channel = 0; channel < 3; ++channel) {
-      // Shares of both signs (unshot light left negative by overshooting or an edit) would put
-      // the moments anywhere as they cancel: the points are where the light's magnitude is.
-      double total = 0, magnitude = 0;
-      glm::dvec2 first{0};
-      glm::dvec3 second{0};
-      for (uint32_t k = node.first; k < node.last; ++k) {
-        const double w = shares[k][channel], m = std::abs(w);
-        const glm::dvec2 p = tree.plane[k];
-        total += w;
-        magnitude += m;
-        first += m * p;
-        second += m * (glm::dvec3(p.x * p.x, p.x * p.y, p.y * p.y) + tree.spread[k]);
+    if (node.children == 0) {
+      const glm::dvec2 p = tree.plane[node.first];
+      light.weight = shares[node.first];
+      light.first = {shares[node.first] * p.x, shares[node.first] * p.y};
+    } else {
+      light.weight = glm::dvec3(0);
+      light.first = {glm::dvec3(0), glm::dvec3(0)};
+      for (uint32_t c = node.child; c < node.child + node.children; ++c) {
+        light.weight += out[c].weight;
+        light.first[0] += out[c].first[0];
+        light.first[1] += out[c].first[1];
       }
-      light.weight[channel] = total;
-      if (!(magnitude > 0)) continue;
-      const glm::dvec2 mean = first / magnitude;
-      const glm::dvec3 c = second / magnitude - glm::dvec3(mean.x * mean.x, mean.x * mean.y, mean.y * mean.y);
-      // The covariance's principal axes: a rectangle lit evenly gets its Gauss points.
-      const double half = 0.5 * (c.x + c.z), difference = 0.5 * (c.x - c.z);
-      const double root = std::sqrt(difference * difference + c.y * c.y);
-      glm::dvec2 axis{difference + root, c.y};
-      const double length = glm::length(axis);
-      axis = length > 0 ? axis / length : glm::dvec2(0, 1);
-      const double major = std::sqrt(std::max(half + root, 0.0)), minor = std::sqrt(std::max(half - root, 0.0));
-      const glm::dvec3 u = major * (axis.x * tree.x + axis.y * tree.y), v = minor * (axis.x * tree.y - axis.y * tree.x);
-      const glm::dvec3 m = tree.origin + mean.x * tree.x + mean.y * tree.y;
-      light.mean[channel] = m;
-      light.points[channel] = {m - u - v, m + u - v, m + u + v, m - u + v};
     }
-    // The first lit channel's points serve all three when the others' lie within 2% of the node's
-    // radius of them: the factor then moves by about that much over the distance, under 1% where
-    // points are used. A colour that varies more across the node needs its own points.
-    int lit = 0;
-    while (lit < 2 && light.weight[lit] == 0.0) ++lit;
-    light.mean[0] = light.mean[lit];
-    light.points[0] = light.points[lit];
-    const auto alike = [&](int channel) {
-      if (light.weight[channel] == 0.0) return true;
-      for (int k = 0; k < 4; ++k)
-        if (glm::length(light.points[channel][k] - light.points[0][k]) > 0.02 * node.radius) return false;
-      return glm::length(light.mean[channel] - light.mean[0]) <= 0.02 * node.radius;
-    };
-    light.sets = alike(1) && alike(2) ? 1 : 3;
+    // The light as a linear function over the node's area with its weight and first moment; the
+    // Gauss points integrate that, each weighing what the function is there.
+    const glm::dvec3 u = light.first[0] - light.weight * node.mean.x, v = light.first[1] - light.weight * node.mean.y;
+    const glm::dvec3 major = u * node.axes[0].x + v * node.axes[0].y, minor = u * node.axes[1].x + v * node.axes[1].y;
+    light.points = {0.25 * (light.weight - major - minor), 0.25 * (light.weight + major - minor),
+                    0.25 * (light.weight + major + minor), 0.25 * (light.weight - major + minor)};
   }
-  // Top down: breadth-first order puts every node after its parent.
-  if (!out.empty()) out[0].lit = out[0].weight != glm::dvec3(0);
-  for (size_t n = 0; n < tree.nodes.size(); ++n)
-    for (uint32_t c = tree.nodes[n].child; c < tree.nodes[n].child + tree.nodes[n].children; ++c)
-      out[c].lit = out[n].lit && out[c].weight != glm::dvec3(0);
 }
 
 void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elements, std::span<const Receiver> receivers,
@@ -186,44 +190,37 @@ void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elemen
     // A node that r's plane cuts sees r's front from one part and its back from the other: the
     // factor has a kink there that a few points would smooth over.
     const double distance = glm::length(node.centre - r.centre) - r.radius;
-    const bool far = node.radius * farRatio <= distance;
     // Corners on r's plane (to rounding) are on neither side.
     const glm::dvec3 middle = 0.5 * (node.low + node.high), half = 0.5 * (node.high - node.low);
     const double height = originHeight + glm::dot(slope, middle), spread = glm::dot(glm::abs(slope), half);
     const double touch = 1e-9 * node.radius;
     const bool cut = height - spread < -touch && height + spread > touch;
-    if (cut || (!far && node.radius * ratio > distance)) {
+    if (cut || node.radius * ratio > distance) {
       for (uint32_t c = node.child; c < node.child + node.children; ++c) self(self, c);
       return;
     }
-    out.steps.push_back({n, far ? NearStep::kMean : NearStep::kPoints});
+    out.steps.push_back({n, NearStep::kPoints});
   };
   visit(visit, 0);
   out.sizes.push_back({static_cast<uint32_t>(out.steps.size() - steps), static_cast<uint32_t>(out.factors.size() - factors)});
 }
 
-void applyPlan(std::span<const NodeLight> light, std::span<const NearStep> steps,
+void applyPlan(const PatchTree& tree, std::span<const NodeLight> light, std::span<const NearStep> steps,
                std::span<const glm::dvec2> factors, const glm::dvec3& normal, const Receiver& r, glm::dvec3& front,
                glm::dvec3& back) {
   const glm::dvec2* factor = factors.data();
   for (const NearStep& step : steps) {
-    const NodeLight& l = light[step.node];
+    const glm::dvec3& weight = light[step.node].weight;
     // A kElement step's factors are passed over also where there is nothing to shoot (under a
     // solid, say).
     if (step.kind == NearStep::kElement) {
       const glm::dvec2 f = *factor++;
-      if (l.lit) front += l.weight * f.x, back += l.weight * f.y;
+      front += weight * f.x, back += weight * f.y;
       continue;
     }
-    if (!l.lit) continue;
-    for (int set = 0; set < l.sets; ++set) {
-      glm::dvec3 weight = l.weight;
-      if (l.sets > 1) weight = glm::dvec3(0), weight[set] = l.weight[set];
-      if (weight == glm::dvec3(0)) continue;
-      if (step.kind == NearStep::kMean) addPoint(l.mean[set], weight, normal, r, front, back);
-      else
-        for (const glm::dvec3& p : l.points[set]) addPoint(p, 0.25 * weight, normal, r, front, back);
-    }
+    if (weight == glm::dvec3(0)) continue;
+    const PatchTree::Node& node = tree.nodes[step.node];
+    for (int k = 0; k < 4; ++k) addPoint(node.points[k], light[step.node].points[k], normal, r, front, back);
   }
 }
 
@@ -232,7 +229,7 @@ void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, st
                      double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back) {
   NearPlans plan;
   planPatchToReceiver(tree, elements, receivers, normal, r, farRatio, ratio, splits, plan);
-  applyPlan(light, plan.steps, plan.factors, normal, r, front, back);
+  applyPlan(tree, light, plan.steps, plan.factors, normal, r, front, back);
 }
 
 }  // namespace radiosity

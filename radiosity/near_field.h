@@ -29,12 +29,17 @@ struct PatchTree {
     // The box that holds every corner, in the tree's coordinates (origin + u x + v y + w z, z the
     // patch's normal): the heights of the corners over a receiver's plane lie within its image.
     glm::dvec3 low{0}, high{0};
+    // Four points with the first and second moments of its area (a rectangle's 2 x 2 Gauss
+    // points), where it counts by points: its area's centroid plus and minus its principal axes
+    // (major, minor) scaled by their deviations, in the order (-,-), (+,-), (+,+), (-,+).
+    std::array<glm::dvec3, 4> points{};
+    // Its centroid in plane coordinates, and per principal axis the direction over its deviation
+    // (zero for a node without extent along it).
+    glm::dvec2 mean{0};
+    std::array<glm::dvec2, 2> axes{};
   };
   std::vector<Node> nodes;
-  // Per element (in the patch's order): its centroid in plane coordinates (origin + u x + v y) and
-  // its second moments of area about the centroid over its area (uu, uv, vv).
-  std::vector<glm::dvec2> plane;
-  std::vector<glm::dvec3> spread;
+  std::vector<glm::dvec2> plane;  // per element (in the patch's order): its centroid (origin + u x + v y)
   glm::dvec3 origin{0}, x{0}, y{0}, z{0};
 };
 
@@ -46,18 +51,16 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
                          const glm::dvec3& y);
 
 // A node's share of one shot: per channel the sum of its elements' shares of the patch's unshot
-// power, and points standing for it: its power-weighted centroid and four points that have the
-// power-weighted first and second moments of its area (the 2 x 2 Gauss points for a uniformly
-// lit rectangle), a quarter of the weight each. Per channel when the colour varies across the
-// node (sets 3), else channel 0's serve all three (sets 1).
+// power, and the weights of its four points: the light taken as a linear function over the
+// node's area with the elements' weight and first moment, at each point, a quarter of the area
+// each (a patch brighter at one end weighs that end's points more). Points stay where the node's
+// area puts them, so a shot's integrals are linear in its elements' light: the sum of two shots'
+// factors is the factors of one shot of their summed light (what a correction after an edit takes
+// back, Solver::edit).
 struct NodeLight {
   glm::dvec3 weight{0};
-  // Neither this node nor any above it is without light: the integral skips a node of zero weight
-  // with everything under it.
-  bool lit = false;
-  int sets = 1;
-  std::array<glm::dvec3, 3> mean{};
-  std::array<std::array<glm::dvec3, 4>, 3> points{};
+  std::array<glm::dvec3, 2> first{};  // the light's first moment about the tree's origin, along u and v
+  std::array<glm::dvec3, 4> points{};
 };
 
 // Per node of `tree`, its light for elements whose per-channel shares (in the patch's element
@@ -66,9 +69,8 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
 
 // Adds to front/back (per channel) the form factor from the patch to `r`, unoccluded, weighted by
 // the shares: from the root down, a node that r's plane does not cut and that is farther from
-// r's bounding sphere than `farRatio` times its radius counts by its mean, one farther than
-// `ratio` times by its four points, others by their children; a leaf's element by areaToPolygon
-// with the same ratios and `splits`. `elements` are
+// r's bounding sphere than `ratio` times its radius counts by its four points, others by their
+// children; a leaf's element by areaToPolygon with `farRatio`, `ratio` and `splits`. `elements` are
 // the patch's, in tree order; `normal` is the patch's. A node is cut by r's plane when its corners
 // lie on both sides of it (by its box), not merely near it: a patch touching r's plane (a floor
 // patch at the foot of a wall) sees r's front from all of it.
@@ -79,11 +81,10 @@ void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, st
 // patchToReceiver in two halves, for a patch that shoots at the same receivers again and again
 // with its light spread differently each time. Which nodes count by their points and which
 // elements by their own integral depends on the geometry alone, and so do those integrals (most
-// of the work): they are the receiver's plan. The light only weighs the integrals and places the
-// points. planPatchToReceiver then applyPlan gives patchToReceiver's sums bit for bit, whatever
-// the light.
+// of the work): they are the receiver's plan. The light only weighs the integrals and the points.
+// planPatchToReceiver then applyPlan gives patchToReceiver's sums bit for bit, whatever the light.
 struct NearStep {
-  enum Kind : uint32_t { kElement, kMean, kPoints };
+  enum Kind : uint32_t { kElement, kPoints };
   uint32_t node = 0;
   Kind kind = kElement;
 };
@@ -110,8 +111,8 @@ void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elemen
                          NearPlans& out);
 
 // Adds to front/back (per channel) r's plan (`steps`, and `factors` of its kElement steps) made
-// with planPatchToReceiver, weighted by `light`; `normal` is the patch's.
-void applyPlan(std::span<const NodeLight> light, std::span<const NearStep> steps,
+// with planPatchToReceiver over `tree`, weighted by `light`; `normal` is the patch's.
+void applyPlan(const PatchTree& tree, std::span<const NodeLight> light, std::span<const NearStep> steps,
                std::span<const glm::dvec2> factors, const glm::dvec3& normal, const Receiver& r, glm::dvec3& front,
                glm::dvec3& back);
 

@@ -146,9 +146,13 @@ class Solver {
   // threads); the solver is then half-way through a shot and must be thrown away.
   bool step();
 
-  // Unshot power over emitted power, summed over channels; 0 for a scene that emits nothing.
+  // Unshot power over emitted power, each patch's channels counted by magnitude (some light is
+  // negative after an edit or with overshooting); 0 for a scene that emits nothing. Take-backs
+  // still pending after an edit are not light yet: only a bound of what they will move is known
+  // before they are done (several times the emitted power after a desk moves in the office).
   double unshotFraction() const;
-  bool converged(double fraction) const { return unshotFraction() <= fraction; }
+  // Nothing left to take back, and the unshot fraction at most `fraction`.
+  bool converged(double fraction) const { return pendingCorrections() == 0 && unshotFraction() <= fraction; }
   // The unshot power per channel, signed (after an edit some light is negative), without the
   // corrections still pending: the term of the power ledgers (Stats).
   glm::dvec3 unshotPower() const;
@@ -177,12 +181,13 @@ class Solver {
   // remeshed surface, where their corners did not change) keep their light; new ones start from
   // their emission. Nothing is restarted (after Chen 1990, "Incremental radiosity"): every patch
   // that has shot and may see what changed has its light taken back along the old geometry's
-  // factors (negative light where it fell) and returned to its elements as unshot light, which
-  // shooting then sends along the new geometry's, so the difference is what moves. A patch that
-  // did not change sends only that difference, from frames of the part of its hemisphere where
-  // the changed elements are seen (SolverSettings::windowedCorrections). Take-backs
-  // come first in step(), the most powerful first; until done, the share of a patch's light
-  // that can reach the changed elements counts as unshot. Take-backs left from an earlier edit
+  // factors exactly as its shots sent it (negative light where it fell), and sent again at once
+  // along the new geometry's, so the difference is what moves and a move and the move back leave
+  // nothing behind. A patch that did not change makes its new frame from its kept one and the
+  // part of its hemisphere where the changed elements are seen
+  // (SolverSettings::windowedCorrections). Take-backs
+  // come first in step(), the most powerful first; until done, the solver has not converged.
+  // Take-backs left from an earlier edit
   // are done first (here). Throws std::invalid_argument for another number of surfaces, or as
   // the constructor does.
   void edit(std::span<const Surface> surfaces);
@@ -198,12 +203,18 @@ class Solver {
  private:
   struct State;
   struct Edit;
-  // One take-back (edit()); false when none is pending.
+  // One correction (edit()): the next pending patch's light taken back and sent again; false
+  // when none is pending.
   bool correct();
-  // The take-back of patch p (of the geometry before the edit) as a difference in a window of
-  // its hemisphere, when it did not change and the window is worth it; false (and no light
-  // moved) otherwise. It finds the next pending patch's window beside p's (solver.cpp).
-  bool correctInWindow(uint32_t p);
+  // For patch p (of the geometry before the edit) when it did not change: its frame now, made
+  // from its kept frame before and what a window of its hemisphere sees, kept for its patch now,
+  // so that sending its light again renders no frame; false (and nothing done) otherwise. It
+  // finds the next pending patch's window beside p's (solver.cpp).
+  bool frameInWindow(uint32_t p);
+  // Patch p's light taken back along the geometry before, as its shots sent it.
+  void takeBack(uint32_t p);
+  // Patch p's light sent again from its elements along the geometry now.
+  void sendAgain(uint32_t p);
   std::unique_ptr<State> state_;
   std::unique_ptr<Edit> edit_;
 };

@@ -96,6 +96,15 @@ struct Solver::State {
   std::vector<Receiver> receiver;
   std::vector<glm::dvec3> centre, normal, radiance;
   std::vector<glm::dvec3> elementUnshot;  // per element; its patch's unshot is their area-weighted mean
+  // Per element, what it has shot along this geometry, so that a take-back after an edit
+  // (Solver::edit) sends back exactly what the shots sent, however unevenly the patch's elements
+  // were lit each time and however each shot's energy was kept (distribute): the radiance sent,
+  // and the same weighed by each shot's scale of its judged receivers (near ones integrate over
+  // the patch element by element). A patch's is its elements' area-weighted mean.
+  struct Sent {
+    glm::dvec3 light{0}, judged{0};
+  };
+  std::vector<Sent> sent;
   std::vector<double> radius, area, offset;
   std::vector<uint32_t> surfaceOf, patchOf;
   // kTargets per element where the item buffer is read for its visibility: its centroid, then
@@ -105,19 +114,23 @@ struct Solver::State {
 
   // Per patch; its elements are patchElements[patchFirst[p], patchLast[p]).
   std::vector<uint32_t> patchElements, patchFirst, patchLast, patchSurface;
-  std::vector<glm::dvec3> patchCentre, unshot, shot;
+  std::vector<glm::dvec3> patchCentre, unshot;
   std::vector<double> patchArea, patchRadius;
   std::vector<uint8_t> pointChosen;  // patchCentre[p] checked for seeing fronts (see choosePoint)
   // The share of backs patchCentre[p] saw when choosePoint chose it, else NaN: a window
-  // correction updates it by what changed in its window (Solver::correctInWindow).
+  // correction updates it by what changed in its window (Solver::frameInWindow).
   std::vector<double> pointBackShare;
-  // The energy scales of patch p's last frame (distribute): of its pixel factors, of its judged
-  // ones. A window correction, which sees part of a frame, applies them to its differences.
+  // The energy scales of a frame (distribute): of its pixel factors, of its judged ones.
   struct FrameScale {
     glm::dvec3 pixels{1}, judged{1};
   };
-  std::vector<FrameScale> patchScale;
   FrameScale lastScale;  // of the last distribute
+  // A take-back's weighing of a frame (distribute): its judged receivers' factors by `judged`,
+  // its pixel receivers' and the sky's by what makes the whole send `total` (per channel): for a
+  // patch's record, what each of its shots sent there.
+  struct Replay {
+    glm::dvec3 total{0}, judged{0};
+  };
   std::vector<PatchTree> trees;      // over each patch's elements, in patchElements' order
 
   std::vector<glm::vec3> soupVertices;
@@ -142,7 +155,7 @@ struct Solver::State {
     double value;
     bool integrated() const { return kind == kNearBehind || (kind == kNear && value > 0); }
   };
-  std::vector<glm::dvec3> shares;
+  std::vector<glm::dvec3> shares, sending;
   std::vector<NodeLight> nodeLight;
   // The receivers of a shot are judged in a fixed number of chunks, whatever the number of
   // graphics processors, and added up in chunk order: the same sums with any thread count. Many
@@ -159,7 +172,6 @@ struct Solver::State {
     uint64_t near = 0, small = 0;
   };
   std::array<ReceiverChunk, kReceiverChunks> chunks;
-  std::array<std::vector<NewFactor>, kReceiverChunks> listed;  // listedFactors' per chunk
 
   // Per patch, its first shot's pixel factors, judged receivers and their plans, chunk by chunk
   // (SolverSettings::shotCacheBytes); none kept while chunkStart is empty.
@@ -201,8 +213,9 @@ struct Solver::State {
   void build(std::span<const Surface> input);
   double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye, uint32_t j,
                     double unoccluded) const;
-  // New factors for the near and small receivers among elements [begin, end) of shooter p's
-  // frame (see shoot).
+  // The near and small receivers among elements [begin, end) of shooter p's frame judged (see
+  // shoot), with the plans of the near ones' integrals, into `out` (integrateJudged gives their
+  // factors).
   void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
                       uint32_t end, ReceiverChunk& out);
   // The same from receivers judged before and their plans (a kept shot's chunk).
@@ -218,6 +231,7 @@ struct Solver::State {
   // chosen, it has none yet, the budget allows); keepShot fills and stores it.
   std::optional<KeptShot> shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const;
   void keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, KeptShot& record);
+  void storeShot(uint32_t p, KeptShot record);
   double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
   std::span<uint32_t> elementsOf(uint32_t p) {
     return {patchElements.data() + patchFirst[p], patchLast[p] - patchFirst[p]};
@@ -236,23 +250,40 @@ struct Solver::State {
     pointBackShare[p] = backs;
   }
   void split(uint32_t p);
+  // Lights patch p's tree for sending radiance dB (per channel) as radiance `light` from its
+  // elements (in elementsOf's order; their area-weighted mean is dB): their shares into `shares`
+  // and its tree. In a channel where dB is zero the shares are the elements' areas'.
+  void lightPatch(uint32_t p, const glm::dvec3& dB, std::span<const glm::dvec3> light);
+  // What patch p has sent along this geometry (its elements', area-weighted).
+  Sent sentBy(uint32_t p) const {
+    Sent sum;
+    for (uint32_t e : elementsOf(p)) {
+      sum.light += area[e] * sent[e].light;
+      sum.judged += area[e] * sent[e].judged;
+    }
+    return {sum.light / patchArea[p], sum.judged / patchArea[p]};
+  }
+  // Adds to the elements' Sent that patch p sent `light` (per element of p, in elementsOf's
+  // order) in the last distribute.
+  void recordSent(uint32_t p, std::span<const glm::dvec3> light) {
+    const std::span<const uint32_t> own = elementsOf(p);
+    for (size_t k = 0; k < own.size(); ++k) {
+      sent[own[k]].light += light[k];
+      sent[own[k]].judged += light[k] * lastScale.judged;
+    }
+  }
   void shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen);
   // Sends radiance dB from patch p along this geometry's form factors, its elements weighted by
   // `shares` (lit into its tree), from its kept shot, `chosen` or a new frame at its centre:
   // deposit(j, front, back) per receiver (factors per channel); returns the share that escaped,
-  // per channel.
+  // per channel. The factors are scaled to keep the frame's energy (lastScale), or as `replay`
+  // says when given (a take-back: the factors then carry the radiance, dB is 1).
   template <typename Deposit>
-  glm::dvec3 distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit);
+  glm::dvec3 distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit,
+                        const Replay* replay = nullptr);
   // Radiance dB sent from `sourceArea` reaching element j with these factors: the reflected part
   // into j's radiance, its unshot light and its patch's, the rest into the power ledgers.
   void receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front, const glm::dvec3& back);
-  // The factors distribute would give `elements` (not patch p's own) from p's frame, its energy
-  // kept by `scale` (distribute's, which depends on the whole frame): judged ones' new factors,
-  // the others' pixel factors (with a windowed frame, those of the window's pixels), in the
-  // order given; zero factors left out.
-  // p's tree must be lit. For corrections that deposit differences (windowed_correction.h).
-  void listedFactors(uint32_t p, const pxpl5::HemisphereFrame& frame, std::span<const uint32_t> elements,
-                     const FrameScale& scale, std::vector<NewFactor>& out);
   // The scene's element and patch spheres, for windowed_correction.h.
   SceneSpheres spheres() const {
     return {centre, radius, surfaceOf, patchCentre, patchRadius, patchFirst, patchLast, patchElements};
@@ -306,6 +337,7 @@ void Solver::State::build(std::span<const Surface> input) {
       surfaceOf.push_back(static_cast<uint32_t>(si));
       radiance.push_back(s.emission);
       elementUnshot.push_back(s.emission);
+      sent.emplace_back();
       const uint32_t local = in.patchOfElement.empty() ? static_cast<uint32_t>(e) : in.patchOfElement[e];
       patches = std::max(patches, local + 1);
       if (members.size() < s.firstPatch + patches) members.resize(s.firstPatch + patches);
@@ -335,11 +367,10 @@ void Solver::State::build(std::span<const Surface> input) {
 void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   if (p == unshot.size()) {
     for (auto* v : {&patchFirst, &patchLast, &patchSurface}) v->emplace_back();
-    for (auto* v : {&patchCentre, &unshot, &shot}) v->emplace_back(0.0);
+    for (auto* v : {&patchCentre, &unshot}) v->emplace_back(0.0);
     for (auto* v : {&patchArea, &patchRadius}) v->emplace_back();
     pointChosen.emplace_back();
     pointBackShare.emplace_back();
-    patchScale.emplace_back();
     trees.emplace_back();
   }
   if (p < keptShots.size()) keptBytes -= keptShots[p].bytes(), keptShots[p] = {};
@@ -371,7 +402,6 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   unshot[p] = light / a;
   pointChosen[p] = 0;
   pointBackShare[p] = std::numeric_limits<double>::quiet_NaN();
-  patchScale[p] = {};
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
   trees[p] = buildPatchTree(own, receiver, axes.x, axes.y);
 }
@@ -449,11 +479,9 @@ void Solver::State::split(uint32_t p) {
   const PatchTree tree = std::move(trees[p]);
   const uint32_t base = patchFirst[p];
   const PatchTree::Node& root = tree.nodes.front();
-  const glm::dvec3 shotBefore = shot[p];
   for (uint32_t c = root.child; c < root.child + root.children; ++c) {
     const uint32_t q = c == root.child ? p : static_cast<uint32_t>(unshot.size());
     setUpPatch(q, base + tree.nodes[c].first, base + tree.nodes[c].last);
-    shot[q] = shotBefore;
   }
   ++stats.splitPatches;
 }
@@ -513,7 +541,6 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
   out.replacedPixels = replacedPixels;
   out.near = nearCount;
   out.small = smallCount;
-  integrateJudged(p, out.judged, {out.plans.steps, out.plans.factors, out.plans.sizes}, out);
 }
 
 void Solver::State::rejudgeReceivers(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans,
@@ -543,7 +570,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
       f.front = glm::dvec3(k.value);
     } else if (k.integrated()) {
       const NearPlanSize size = plans.sizes[plan++];
-      applyPlan(nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
+      applyPlan(trees[p], nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
                 receiver[j], f.front, f.back);
       step += size.steps;
       factor += size.factors;
@@ -587,8 +614,12 @@ void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, Ke
     record.plans.steps.insert(record.plans.steps.end(), chunk.plans.steps.begin(), chunk.plans.steps.end());
     record.plans.factors.insert(record.plans.factors.end(), chunk.plans.factors.begin(), chunk.plans.factors.end());
   }
+  storeShot(p, std::move(record));
+}
+
+void Solver::State::storeShot(uint32_t p, KeptShot record) {
   if (keptShots.size() <= p) keptShots.resize(unshot.size());
-  keptBytes += record.bytes();
+  keptBytes += record.bytes() - keptShots[p].bytes();
   keptShots[p] = std::move(record);
 }
 
@@ -610,26 +641,36 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
     for (int c = 0; c < 3; ++c) over[c] = std::clamp(expected[c], 0.0, std::max(unshot[p][c], 0.0));
   }
   const glm::dvec3 dB = unshot[p] + over;
-  // Each element's share of the patch's unshot power per channel: the near field sees the
-  // patch's elements one by one, so a patch brighter at one end lights its near receivers so.
-  shares.clear();
+  // Each element sends its own unshot light: the near field sees the patch's elements one by
+  // one, so a patch brighter at one end lights its near receivers so. A channel in which the
+  // patch sends nothing leaves its elements' light (which sums to nothing) where it is.
+  sending.clear();
   for (uint32_t e : elementsOf(p)) {
-    glm::dvec3 w = area[e] / patchArea[p] * glm::dvec3(1);
+    glm::dvec3& light = sending.emplace_back(0.0);
     for (int c = 0; c < 3; ++c)
-      if (dB[c] != 0) w[c] = area[e] * (elementUnshot[e][c] + over[c]) / (patchArea[p] * dB[c]);
-    shares.push_back(w);
-    elementUnshot[e] = -over;
+      if (dB[c] != 0) light[c] = elementUnshot[e][c] + over[c], elementUnshot[e][c] = -over[c];
   }
-  lightPatchTree(trees[p], shares, nodeLight);
+  lightPatch(p, dB, sending);
   unshot[p] = -over;
-  shot[p] += dB;
   history.push_back({p, dB});
   // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
   const glm::dvec3 escaped = distribute(p, frame, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
     receive(j, patchArea[p], dB, front, back);
   });
   stats.escapedPower += kPi * dB * patchArea[p] * escaped;
-  patchScale[p] = lastScale;
+  recordSent(p, sending);
+}
+
+void Solver::State::lightPatch(uint32_t p, const glm::dvec3& dB, std::span<const glm::dvec3> light) {
+  const std::span<const uint32_t> own = elementsOf(p);
+  shares.clear();
+  for (size_t k = 0; k < own.size(); ++k) {
+    glm::dvec3 w = area[own[k]] / patchArea[p] * glm::dvec3(1);
+    for (int c = 0; c < 3; ++c)
+      if (dB[c] != 0) w[c] = area[own[k]] * light[k][c] / (patchArea[p] * dB[c]);
+    shares.push_back(w);
+  }
+  lightPatchTree(trees[p], shares, nodeLight);
 }
 
 void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front,
@@ -644,48 +685,9 @@ void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB,
   stats.backPower += power * back;
 }
 
-void Solver::State::listedFactors(uint32_t p, const pxpl5::HemisphereFrame& frame, std::span<const uint32_t> elements,
-                                  const FrameScale& scale, std::vector<NewFactor>& out) {
-  const glm::dvec3 eye = patchCentre[p];
-  const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
-  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = f.factor;
-  // In the shot's chunks on the graphics processors, one receiver at a time through the shot's
-  // own judgement; listed in the chunks' order.
-  const size_t count = elements.size(), parts = std::min(kReceiverChunks, count);
-  renderer.runOnGraphicsProcessors(parts, [&](size_t c, int) {
-    ReceiverChunk& judged = chunks[c];
-    std::vector<NewFactor>& list = listed[c];
-    list.clear();
-    uint64_t nearCount = 0, smallCount = 0;
-    for (size_t k = c * count / parts; k < (c + 1) * count / parts; ++k) {
-      const uint32_t j = elements[k];
-      judgeReceivers(p, frame, axes, j, j + 1, judged);
-      nearCount += judged.near;
-      smallCount += judged.small;
-      if (!judged.factors.empty()) {
-        replaced[j] = 0;
-        const NewFactor& f = judged.factors.front();
-        if (f.front != glm::dvec3(0) || f.back != glm::dvec3(0)) list.push_back({j, f.front * scale.judged, f.back * scale.judged});
-        continue;
-      }
-      if (pixelFactor[j] == 0) continue;
-      const glm::dvec3 factor = pixelFactor[j] * scale.pixels;
-      if (glm::dot(normal[j], eye) > offset[j]) list.push_back({j, factor, glm::dvec3(0)});
-      else list.push_back({j, glm::dvec3(0), factor});
-    }
-    judged.near = nearCount, judged.small = smallCount;
-  });
-  out.clear();
-  for (size_t c = 0; c < parts; ++c) {
-    out.insert(out.end(), listed[c].begin(), listed[c].end());
-    stats.nearReceivers += chunks[c].near;
-    stats.smallReceivers += chunks[c].small;
-  }
-  for (const pxpl5::IdFactor& f : frame.factors) pixelFactor[f.id] = 0;
-}
-
 template <typename Deposit>
-glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit) {
+glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit,
+                                     const Replay* replay) {
   const uint32_t si = patchSurface[p];
   const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
 
@@ -705,9 +707,12 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
     if (before)
       rejudgeReceivers(p, before->judgedOf(c), before->plansOf(c), chunks[c]);
-    else
+    else {
+      ReceiverChunk& chunk = chunks[c];
       judgeReceivers(p, *frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
-                     static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunks[c]);
+                     static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunk);
+      integrateJudged(p, chunk.judged, {chunk.plans.steps, chunk.plans.factors, chunk.plans.sizes}, chunk);
+    }
   });
   stats.reusedShots += before != nullptr;
   double replacedPixels = 0;
@@ -729,7 +734,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   const double sky = std::max(0.0, 1.0 - total);
   glm::dvec3 scale{1}, newScale{1};
   bool renormalised = false;
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < 3 && !replay; ++c) {
     const double difference = replacedNew[c] - replacedPixels;
     if (kept + sky >= 10 * std::abs(difference)) {
       if (kept + sky > 0) scale[c] = (kept + sky - difference) / (kept + sky);
@@ -737,6 +742,10 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
       scale[c] = newScale[c] = 1.0 / (kept + sky + replacedNew[c]);
       renormalised = true;
     }
+  }
+  for (int c = 0; c < 3 && replay; ++c) {
+    newScale[c] = replay->judged[c];
+    scale[c] = kept + sky > 0 ? (replay->total[c] - newScale[c] * replacedNew[c]) / (kept + sky) : 0.0;
   }
   stats.renormalisedShots += renormalised;
   lastScale = {scale, newScale};
@@ -793,10 +802,9 @@ struct Solver::Edit {
     double power = 0;    // the part of its shot power that can change course, summed over channels
   };
   std::vector<TakeBack> pending;  // least power first: taken from the back
-  double pendingPower = 0;
   std::vector<uint32_t> elements, patches;  // scratch of one correction
 
-  // What changed, for corrections in a window (correctInWindow).
+  // What changed, for corrections in a window (frameInWindow).
   std::vector<uint32_t> elementBefore;             // per element now: its index before, or kNone
   std::vector<uint8_t> changedBefore, changedNow;  // per element: moved, went or came
   std::vector<uint32_t> changed[2];                // those elements, before and now
@@ -817,7 +825,7 @@ struct Solver::Edit {
     explicit Window(int resolution);
     pxpl5::HemisphereRenderer renderer;
     double pixelShare = 0;  // the factor of one disk pixel
-    // What correctInWindow deposits along, for patch `patch` before, `now` now.
+    // What frameInWindow makes the frame now from, for patch `patch` before, `now` now.
     uint32_t patch = kNone, now = kNone;
     bool windowable = false;
     double pointBacks = 0;      // the share of backs its point sees now (choosePoint's measure)
@@ -836,10 +844,17 @@ struct Solver::Edit {
   };
   std::array<std::unique_ptr<Window>, 2> windows;  // made at the first correction in a window
   bool nextPrepared = false;  // windows[1] holds the next pending correction's window
-  std::vector<State::NewFactor> factors[2];
-  // Finds what patch p's correction in a window deposits along into w (windowable false when it
-  // cannot be corrected so). Reads `before`, `now` and what changed, writes only w.
+  // Finds what patch p's window holds into w (windowable false when it cannot be corrected so).
+  // Reads `before`, `now` and what changed, writes only w.
   void findWindow(const State& now, uint32_t p, Window& w) const;
+  // Moves patch p's kept shot in `old` (which it must have; the geometry before) to patch q now,
+  // of p's elements, unmoved: its elements as they are now. With p's window w, what changed
+  // there: the pixel factors less what the window saw before plus what it sees now, the
+  // receivers it judged again judged on its frame now (their pixels there are whole). What a new
+  // frame at its point would give, without rendering it. Uses now's scratch.
+  void moveShot(State& old, State& now, uint32_t p, uint32_t q, const Window* w);
+  std::vector<uint8_t> rejudged;  // scratch of moveShot: per element before, judged again in the window
+  State::ReceiverChunk judging;
   // The window of pending patch p (just taken from `pending`): prepared by the last call, or
   // found now beside the next pending patch's.
   Window& windowOf(State& now, uint32_t p);
@@ -856,6 +871,20 @@ struct Solver::Edit {
     for (size_t k = 0; k < own.size(); ++k)
       if (elementNow[own[k]] != theirs[k]) return kNone;
     return q;
+  }
+  // Takes back the light that reached element j (before) from a patch of area `area`, with these
+  // factors carrying its radiance per channel: from j now, or, when j is gone, off the ledgers
+  // (its reflected part off the removed light's).
+  void takeBack(State& now, uint32_t j, double area, const glm::dvec3& front, const glm::dvec3& back) const {
+    if (const uint32_t i = elementNow[j]; i != kNone) {
+      now.receive(i, area, glm::dvec3(-1), front, back);
+      return;
+    }
+    const glm::dvec3& rho = before->surfaces[before->surfaceOf[j]].reflectance;
+    const double power = -kPi * area;
+    now.stats.absorbedPower += (1.0 - rho) * power * front;
+    now.stats.backPower += power * back;
+    now.stats.removedPower += rho * power * front;
   }
   uint32_t unmovedPatch(const State& b, const State& now, uint32_t p) const {
     const std::span<const uint32_t> own = b.elementsOf(p);
@@ -994,13 +1023,14 @@ void Solver::edit(std::span<const Surface> surfaces) {
     }
     return std::min(factor, 1.0);
   };
-  // Light that stays where it was sent is still shot light, of the patches its elements are in.
-  std::vector<glm::dvec3> keptShot(n.receiver.size(), glm::dvec3(0));
-  std::vector<uint32_t> unaffected;  // patches that shot and see none of the change
+  // Light that stays where it was sent is still shot light, of the elements that sent it, when
+  // they still form the patch that sent it (it is taken back along that patch's frame).
   for (uint32_t p = 0; p < old.unshot.size(); ++p) {
-    const double power = kPi * channelSum(old.shot[p]) * old.patchArea[p];
+    double power = 0;
+    for (uint32_t j : old.elementsOf(p)) power += kPi * channelSum(old.sent[j].light) * old.area[j];
     if (power == 0) continue;
-    bool itself = false;
+    const uint32_t same = edit->samePatch(old, n, p);
+    bool itself = same == kNone;
     for (uint32_t j : old.elementsOf(p)) itself = itself || changedBefore[j];
     const uint32_t si = old.patchSurface[p];
     const glm::dvec3 up = old.surfaces[si].normal, eye = old.patchCentre[p];
@@ -1011,27 +1041,17 @@ void Solver::edit(std::span<const Surface> surfaces) {
                            clusterReach(eye, up, si, size)});
     if (share > 0) {
       edit->pending.push_back({p, power * share});
-      edit->pendingPower += power * share;
       continue;
     }
-    for (uint32_t j : old.elementsOf(p)) keptShot[edit->elementNow[j]] = old.shot[p];
-    unaffected.push_back(p);
+    // It sees nothing of the change and sees what it saw: the point it chose and its frame stand.
+    for (uint32_t j : old.elementsOf(p)) n.sent[edit->elementNow[j]] = old.sent[j];
+    n.adoptPoint(same, old.patchCentre[p], old.patchRadius[p], old.pointBackShare[p]);
+    if (old.keptShot(p)) edit->moveShot(old, n, p, same, nullptr);
   }
-  // A patch that sees nothing of the change sees what it saw: the point it chose stands.
-  for (uint32_t p : unaffected) {
-    if (!old.pointChosen[p]) continue;
-    const uint32_t q = edit->samePatch(old, n, p);
-    if (q == kNone) continue;
-    n.adoptPoint(q, old.patchCentre[p], old.patchRadius[p], old.pointBackShare[p]);
-    n.patchScale[q] = old.patchScale[p];
-  }
-  // The new patches' unshot and shot light from their elements.
+  // The new patches' unshot light from their elements.
   for (uint32_t q = 0; q < n.unshot.size(); ++q) {
-    n.unshot[q] = n.shot[q] = glm::dvec3(0);
-    for (uint32_t i : n.elementsOf(q)) {
-      n.unshot[q] += n.elementUnshot[i] * (n.area[i] / n.patchArea[q]);
-      n.shot[q] += keptShot[i] * (n.area[i] / n.patchArea[q]);
-    }
+    n.unshot[q] = glm::dvec3(0);
+    for (uint32_t i : n.elementsOf(q)) n.unshot[q] += n.elementUnshot[i] * (n.area[i] / n.patchArea[q]);
   }
   std::sort(edit->pending.begin(), edit->pending.end(),
             [](const Edit::TakeBack& a, const Edit::TakeBack& b) { return a.power < b.power; });
@@ -1049,46 +1069,47 @@ bool Solver::correct() {
   if (!edit_ || edit_->pending.empty()) return false;
   const Edit::TakeBack t = edit_->pending.back();
   edit_->pending.pop_back();
-  edit_->pendingPower -= t.power;
+  State& now = *state_;
+  takeBack(t.patch);
+  const bool windowed = frameInWindow(t.patch);
+  sendAgain(t.patch);
+  ++now.stats.corrections;
+  now.stats.windowedCorrections += windowed;
+  if (edit_->pending.empty()) edit_.reset();
+  return true;
+}
+
+void Solver::takeBack(uint32_t p) {
   State &before = *edit_->before, &now = *state_;
-  const uint32_t p = t.patch;
-  if (correctInWindow(p)) {
-    ++now.stats.corrections;
-    ++now.stats.windowedCorrections;
-    if (edit_->pending.empty()) edit_.reset();
-    return true;
-  }
-  const glm::dvec3 S = before.shot[p];
-  const double areaBefore = before.patchArea[p];
+  // Along p's factors before, as its shots sent it: its judged (near and small) receivers'
+  // factors weighed by its elements' light as the shots weighed it, its pixel receivers and the
+  // sky taking the rest of what it sent (each shot kept the frame's energy so). The factors carry
+  // the radiance. What fell on removed elements comes off their ledger.
+  const State::Sent S = before.sentBy(p);
+  before.sending.clear();
+  for (uint32_t e : before.elementsOf(p)) before.sending.push_back(before.sent[e].judged);
+  before.lightPatch(p, S.judged, before.sending);
+  const State::Replay replay{S.light, S.judged};
+  const double area = before.patchArea[p];
+  const glm::dvec3 escaped = before.distribute(
+      p, nullptr,
+      [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) { edit_->takeBack(now, j, area, front, behind); },
+      &replay);
+  now.stats.escapedPower -= kPi * area * escaped;
+}
 
-  // Taken back along the old factors, from the elements that are still there; what fell on
-  // removed ones comes off their ledger.
-  before.shares.clear();
-  for (uint32_t e : before.elementsOf(p)) before.shares.push_back(before.area[e] / areaBefore * glm::dvec3(1));
-  lightPatchTree(before.trees[p], before.shares, before.nodeLight);
-  const glm::dvec3 escaped = before.distribute(p, nullptr, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& behind) {
-    if (const uint32_t i = edit_->elementNow[j]; i != kNone) {
-      now.receive(i, areaBefore, -S, front, behind);
-      return;
-    }
-    const glm::dvec3& rho = before.surfaces[before.surfaceOf[j]].reflectance;
-    const glm::dvec3 power = -kPi * S * areaBefore;
-    now.stats.absorbedPower += (1.0 - rho) * power * front;
-    now.stats.backPower += power * behind;
-    now.stats.removedPower += rho * power * front;
-  });
-  now.stats.escapedPower -= kPi * S * areaBefore * escaped;
-
-  // Sent again along the new factors from the same elements, at once, so that receivers whose
-  // light did not change get back what they lost before they shoot it (the removed elements'
-  // share goes to their ledger). Their patches now may group them otherwise, and may first have
-  // to settle the point they shoot from (which can split them).
+void Solver::sendAgain(uint32_t p) {
+  State &before = *edit_->before, &now = *state_;
+  // From the same elements, each its own light, at once, so that receivers whose light did not
+  // change get back what they lost before they shoot it (the removed elements' share goes to
+  // their ledger). Their patches now may group them otherwise, and may first have to settle the
+  // point they shoot from (which can split them).
   std::vector<uint32_t>& from = edit_->elements;
   std::vector<uint32_t>& patches = edit_->patches;
   from.clear();
   for (uint32_t j : before.elementsOf(p)) {
     const uint32_t i = edit_->elementNow[j];
-    if (i == kNone) now.stats.removedPower += kPi * S * before.area[j];
+    if (i == kNone) now.stats.removedPower += kPi * before.sent[j].light * before.area[j];
     else from.push_back(i);
   }
   // The frame of the last point chosen is still the renderer's: it is that patch's shot frame.
@@ -1118,15 +1139,16 @@ bool Solver::correct() {
   }
   std::sort(from.begin(), from.end());
   for (uint32_t q : patches) {
-    // The patch's elements that carry p's light send S, the others nothing.
-    double carrying = 0;
-    for (uint32_t i : now.elementsOf(q))
-      if (std::binary_search(from.begin(), from.end(), i)) carrying += now.area[i];
-    now.shares.clear();
-    for (uint32_t i : now.elementsOf(q))
-      now.shares.push_back(glm::dvec3(std::binary_search(from.begin(), from.end(), i) ? now.area[i] / carrying : 0.0));
-    const glm::dvec3 dB = S * (carrying / now.patchArea[q]);
-    lightPatchTree(now.trees[q], now.shares, now.nodeLight);
+    // The patch's elements that carry p's light send it, the others nothing.
+    std::vector<glm::dvec3>& carried = now.sending;
+    carried.clear();
+    glm::dvec3 dB{0};
+    for (uint32_t i : now.elementsOf(q)) {
+      const bool carrying = std::binary_search(from.begin(), from.end(), i);
+      dB += now.area[i] * carried.emplace_back(carrying ? before.sent[edit_->elementBefore[i]].light : glm::dvec3(0));
+    }
+    dB /= now.patchArea[q];
+    now.lightPatch(q, dB, carried);
     const double area = now.patchArea[q];
     const pxpl5::HemisphereFrame* chosen = q == lastChosen && now.pointChosen[q] ? lastFrame : nullptr;
     lastChosen = kNone;  // any other patch renders a frame of its own
@@ -1134,12 +1156,8 @@ bool Solver::correct() {
       now.receive(j, area, dB, front, behind);
     });
     now.stats.escapedPower += kPi * dB * area * out;
-    now.patchScale[q] = now.lastScale;
-    now.shot[q] += dB;
+    now.recordSent(q, carried);
   }
-  ++now.stats.corrections;
-  if (edit_->pending.empty()) edit_.reset();
-  return true;
 }
 
 Solver::Edit::Window::Window(int resolution) : renderer({resolution, pxpl5::Projection::kHemisphere, 1}) {
@@ -1338,6 +1356,84 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   w.windowable = true;
 }
 
+void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, const Window* w) {
+  State::KeptShot shot = std::move(old.keptShots[p]);
+  old.keptBytes -= shot.bytes();
+  old.keptShots[p] = {};
+
+  // Pixel factors of the elements now. The window's frames are drawn their own way
+  // (windowed_correction.h), which may give an element a pixel more or less than a whole frame
+  // where two elements meet: such a pixel stays, negative if need be, so that a move and the move
+  // back give back the frame they began with. What is left of an element gone from the window is
+  // rounding. The differences are summed in now's scratch.
+  std::vector<double>& difference = now.pixelFactor;
+  if (w) {
+    for (const pxpl5::IdFactor& f : w->frame[0].factors)
+      if (const uint32_t i = elementNow[f.id]; i != kNone) difference[i] -= f.factor;
+    for (const pxpl5::IdFactor& f : w->frame[1].factors) difference[f.id] += f.factor;
+  }
+  for (pxpl5::IdFactor& f : shot.factors) {
+    f.id = elementNow[f.id];
+    if (f.id != kNone) f.factor += std::exchange(difference[f.id], 0.0);
+  }
+  if (w) {
+    for (const pxpl5::IdFactor& f : w->frame[1].factors)
+      if (difference[f.id] != 0) shot.factors.push_back({f.id, std::exchange(difference[f.id], 0.0)});
+    for (const pxpl5::IdFactor& f : w->frame[0].factors)
+      if (const uint32_t i = elementNow[f.id]; i != kNone && difference[i] != 0)
+        shot.factors.push_back({i, std::exchange(difference[i], 0.0)});
+  }
+  std::erase_if(shot.factors,
+                [&](const pxpl5::IdFactor& f) { return f.id == kNone || std::abs(f.factor) < 1e-3 * now.pixelShare; });
+  shot.total = 0;
+  for (const pxpl5::IdFactor& f : shot.factors) shot.total += f.factor;
+
+  // The receivers judged before, but those the window judged again, chunk by chunk; then those,
+  // judged on its frame now (with the pixel factors now), in the last chunk.
+  rejudged.assign(old.receiver.size(), 0);
+  if (w)
+    for (uint32_t j : w->judged[0]) rejudged[j] = 1;
+  State::KeptShot::ChunkStart to{}, from{};
+  for (size_t c = 0; c < State::kReceiverChunks; ++c) {
+    const State::KeptShot::ChunkStart end = shot.chunkStart[c + 1];
+    for (; from.judged < end.judged; ++from.judged) {
+      const State::Judged k = shot.judged[from.judged];
+      NearPlanSize size{};
+      if (k.integrated()) size = shot.plans.sizes[from.plans++];
+      if (const uint32_t i = elementNow[k.element]; !rejudged[k.element] && i != kNone) {
+        shot.judged[to.judged++] = {i, k.kind, k.value};
+        if (k.integrated()) {
+          shot.plans.sizes[to.plans++] = size;
+          std::copy_n(shot.plans.steps.begin() + from.steps, size.steps, shot.plans.steps.begin() + to.steps);
+          std::copy_n(shot.plans.factors.begin() + from.factors, size.factors, shot.plans.factors.begin() + to.factors);
+          to.steps += size.steps, to.factors += size.factors;
+        }
+      }
+      from.steps += size.steps, from.factors += size.factors;
+    }
+    shot.chunkStart[c + 1] = to;
+  }
+  shot.judged.resize(to.judged);
+  shot.plans.sizes.resize(to.plans);
+  shot.plans.steps.resize(to.steps);
+  shot.plans.factors.resize(to.factors);
+  if (w) {
+    for (const pxpl5::IdFactor& f : shot.factors) now.pixelFactor[f.id] = f.factor;
+    const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaces[now.patchSurface[q]].normal));
+    for (uint32_t i : w->judged[1]) {
+      now.judgeReceivers(q, w->frame[1], axes, i, i + 1, judging);
+      shot.judged.insert(shot.judged.end(), judging.judged.begin(), judging.judged.end());
+      shot.plans.sizes.insert(shot.plans.sizes.end(), judging.plans.sizes.begin(), judging.plans.sizes.end());
+      shot.plans.steps.insert(shot.plans.steps.end(), judging.plans.steps.begin(), judging.plans.steps.end());
+      shot.plans.factors.insert(shot.plans.factors.end(), judging.plans.factors.begin(), judging.plans.factors.end());
+    }
+    for (const pxpl5::IdFactor& f : shot.factors) now.pixelFactor[f.id] = 0;
+    shot.chunkStart.back() = {static_cast<uint32_t>(shot.judged.size()), static_cast<uint32_t>(shot.plans.sizes.size()),
+                              static_cast<uint32_t>(shot.plans.steps.size()), static_cast<uint32_t>(shot.plans.factors.size())};
+  }
+  now.storeShot(q, std::move(shot));
+}
+
 Solver::Edit::Window& Solver::Edit::windowOf(State& now, uint32_t p) {
   if (nextPrepared && windows[1]->patch == p) {
     nextPrepared = false;
@@ -1353,10 +1449,12 @@ Solver::Edit::Window& Solver::Edit::windowOf(State& now, uint32_t p) {
   return *windows[0];
 }
 
-bool Solver::correctInWindow(uint32_t p) {
+bool Solver::frameInWindow(uint32_t p) {
   Edit& e = *edit_;
   State &before = *e.before, &now = *state_;
-  if (!before.settings.windowedCorrections) return false;
+  // The frame now is made from p's kept one before (which its take-back has done with), and kept
+  // as q's.
+  if (!before.settings.windowedCorrections || !before.keptShot(p)) return false;
   const Edit::Window& w = e.windowOf(now, p);
   now.stats.frames += w.frames;
   if (!w.windowable) return false;
@@ -1365,42 +1463,7 @@ bool Solver::correctInWindow(uint32_t p) {
     if (w.pointBacks > kMostBacks) return false;
     now.adoptPoint(q, before.patchCentre[p], before.patchRadius[p], w.pointBacks);
   }
-
-  // Their factors before and now, from the same elements lit alike.
-  const glm::dvec3 S = before.shot[p];
-  const double area = before.patchArea[p];
-  for (State* s : {&before, &now}) {
-    const uint32_t patch = s == &before ? p : q;
-    s->shares.clear();
-    for (uint32_t k : s->elementsOf(patch)) s->shares.push_back(s->area[k] / area * glm::dvec3(1));
-    lightPatchTree(s->trees[patch], s->shares, s->nodeLight);
-  }
-  // The scales of p's last whole frame, for both: the window changes them by the change of its
-  // judged receivers' corrections only.
-  before.listedFactors(p, w.frame[0], w.judged[0], before.patchScale[p], e.factors[0]);
-  now.listedFactors(q, w.frame[1], w.judged[1], before.patchScale[p], e.factors[1]);
-  now.patchScale[q] = before.patchScale[p];
-
-  // Now less before; what fell on removed elements comes off their ledger.
-  glm::dvec3 arrived{0};
-  for (const State::NewFactor& f : e.factors[0]) {
-    arrived -= f.front + f.back;
-    if (const uint32_t i = e.elementNow[f.element]; i != kNone) {
-      now.receive(i, area, -S, f.front, f.back);
-      continue;
-    }
-    const glm::dvec3& rho = before.surfaces[before.surfaceOf[f.element]].reflectance;
-    const glm::dvec3 power = -kPi * S * area;
-    now.stats.absorbedPower += (1.0 - rho) * power * f.front;
-    now.stats.backPower += power * f.back;
-    now.stats.removedPower += rho * power * f.front;
-  }
-  for (const State::NewFactor& f : e.factors[1]) {
-    arrived += f.front + f.back;
-    now.receive(f.element, area, S, f.front, f.back);
-  }
-  now.stats.escapedPower -= kPi * S * area * arrived;
-  now.shot[q] += S;
+  e.moveShot(before, now, p, q, &w);
   return true;
 }
 
@@ -1443,8 +1506,7 @@ double Solver::unshotFraction() const {
   const State& s = *state_;
   const double emitted = channelSum(s.stats.emittedPower);
   if (emitted <= 0) return 0;
-  // Light still to be taken back after an edit counts as unshot.
-  double unshotPower = edit_ ? edit_->pendingPower : 0;
+  double unshotPower = 0;
   for (size_t p = 0; p < s.unshot.size(); ++p) unshotPower += kPi * channelSum(s.unshot[p]) * s.patchArea[p];
   return unshotPower / emitted;
 }

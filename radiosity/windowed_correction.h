@@ -3,7 +3,7 @@
 // directions of the elements that changed, so its take-back and resend differ only in a window
 // of its hemisphere image: both frames are rendered in that window alone (pxpl5's scissor), and
 // only the receivers whose pixels or item-buffer targets changed there are judged again.
-// These are the geometric steps, on plain arrays; Solver::correctInWindow (solver.cpp) drives them.
+// These are the geometric steps, on plain arrays; Solver::frameInWindow (solver.cpp) drives them.
 // Internal to radiosity/.
 //
 // Windows are rectangles of pixels of the hemisphere image (pxpl5::HemisphereFrame), `resolution`

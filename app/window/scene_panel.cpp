@@ -34,6 +34,7 @@ void lightingSection(const engine::LightingSnapshot& lighting, PanelState& state
   if (!ImGui::CollapsingHeader("Radiosity", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Text("%llu shots, %.0f shots/s", static_cast<unsigned long long>(lighting.shots), lighting.shotsPerSecond);
   ImGui::Text("unshot energy %.3g%% of emitted", 100 * lighting.unshotFraction);
+  if (lighting.pendingCorrections > 0) ImGui::Text("%zu corrections pending", lighting.pendingCorrections);
   ImGui::ProgressBar(static_cast<float>(1 - lighting.unshotFraction), ImVec2(-1, 0),
                      lighting.converged ? "converged" : lighting.paused ? "paused" : "shooting");
   ImGui::Text("%zu elements, %zu shooting patches", lighting.elements, lighting.patches);

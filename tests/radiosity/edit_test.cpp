@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -25,7 +26,13 @@ TEST(RadiosityEdit, AMovedBoardGivesWhatAFreshSolveGives) {
   const double before = solver.unshotFraction();
   solver.edit(roomWithBoard(0.25, 0.4));
   EXPECT_GT(solver.pendingCorrections(), 0u);
-  EXPECT_GT(solver.unshotFraction(), before);  // the light still to correct counts as unshot
+  // The take-backs to do keep it from converging, and count as unshot light only once done: on
+  // main their bound counted at once (185% of emitted here, 195% after the office's desk moved).
+  EXPECT_FALSE(solver.converged(before));
+  EXPECT_EQ(solver.unshotFraction(), before);
+  double most = 0;
+  while (solver.pendingCorrections() > 0 && solver.step()) most = std::max(most, solver.unshotFraction());
+  EXPECT_LT(most, 0.5);
   const uint64_t shotsBefore = solver.stats().shots;
   solver.solve(1e-3);
   EXPECT_EQ(solver.pendingCorrections(), 0u);
@@ -34,9 +41,9 @@ TEST(RadiosityEdit, AMovedBoardGivesWhatAFreshSolveGives) {
   Solver fresh(roomWithBoard(0.25, 0.4));
   fresh.solve(1e-3);
   const double error = meanDifference(solver, fresh);
-  std::printf("moved board: %llu corrections and %llu shots after the edit (a fresh solve: %llu shots); "
-              "difference %.3f%%\n",
-              static_cast<unsigned long long>(solver.stats().corrections),
+  std::printf("moved board: %llu corrections (unshot at most %.1f%% meanwhile) and %llu shots after the edit (a "
+              "fresh solve: %llu shots); difference %.3f%%\n",
+              static_cast<unsigned long long>(solver.stats().corrections), 100 * most,
               static_cast<unsigned long long>(solver.stats().shots - shotsBefore),
               static_cast<unsigned long long>(fresh.stats().shots), 100 * error);
   EXPECT_LT(error, 0.01);
@@ -74,10 +81,10 @@ TEST(RadiosityEdit, ARemeshedSurfaceGathersItsLight) {
   EXPECT_LT(ledgerResidual(solver), 1e-12);
 }
 
-// A correction in a window of the hemisphere deposits what taking back and sending again all of
-// the patch's light deposits. Compared on what the corrections changed, element by element;
-// they differ by the energy the whole frames keep by rescaling (distribute and correctInWindow in solver.cpp), which the window
-// leaves to the sky.
+// A correction whose frame is made from the window of the hemisphere where the change is seen
+// deposits what one with a whole new frame deposits. Compared on what the corrections changed,
+// element by element: the same to rounding (on main, which deposited the window's differences
+// and left the frame's change of energy to the sky, 1.2% of the change).
 TEST(RadiosityEdit, AWindowedCorrectionDepositsWhatAWholeOneDoes) {
   SolverSettings whole;
   whole.windowedCorrections = false;
@@ -111,13 +118,67 @@ TEST(RadiosityEdit, AWindowedCorrectionDepositsWhatAWholeOneDoes) {
       worst = std::max(worst, d / test::channelSum(b[e]));
     }
   }
-  std::printf("windowed corrections: %llu of %llu; deposits differ by %.3f%% of what the corrections changed, "
-              "worst element %.3f%% of its radiance\n",
+  std::printf("windowed corrections: %llu of %llu; deposits differ by %.2e of what the corrections changed, "
+              "worst element %.2e of its radiance\n",
               static_cast<unsigned long long>(windowed.stats().windowedCorrections),
-              static_cast<unsigned long long>(windowed.stats().corrections), 100 * difference / change, 100 * worst);
+              static_cast<unsigned long long>(windowed.stats().corrections), difference / change, worst);
   EXPECT_GT(change, 0);
-  EXPECT_LT(difference, 0.02 * change);
-  EXPECT_LT(worst, 0.005);
+  EXPECT_LT(difference, 1e-9 * change);
+  EXPECT_LT(worst, 1e-9);
+}
+
+// A board dragged to and fro many times over a coloured floor, as the application solves (with
+// overshooting), ends where a fresh solve of the scene ends, element by element, and the ledgers
+// close after every move. On main each round trip left a residue (the near field's take-back
+// was not what the shots gave, windowed corrections left energy to the sky): these 20 moves
+// ended 3.9% mean off, 35% at the 99th percentile.
+TEST(RadiosityEdit, MovingToAndFroManyTimesDoesNotDrift) {
+  SolverSettings settings;
+  settings.overshoot = true;
+  settings.resolution = 64;  // coarse frames: both solves have the same
+  const auto scene = [](bool moved) {
+    std::vector<Surface> room = roomWithBoard(moved ? 0.3 : 0, 0.1);
+    room[0].reflectance = {0.7, 0.3, 0.2};  // the floor, red, as the office's desk front shows
+    return room;
+  };
+  Solver solver(scene(false), settings);
+  solver.solve(1e-3);
+  double ledger = 0;
+  const int moves = 20;
+  for (int move = 1; move <= moves; ++move) {
+    solver.edit(scene(move % 2 == 1));
+    solver.solve(1e-3);
+    ledger = std::max(ledger, ledgerResidual(solver));
+  }
+  Solver fresh(scene(false), settings);
+  fresh.solve(1e-3);
+
+  // Per element, its relative difference (channels summed), weighed by area.
+  const std::vector<Surface> surfaces = scene(false);
+  std::vector<std::pair<double, double>> relative;  // difference, area
+  double mean = 0, total = 0;
+  for (uint32_t s = 0; s < surfaces.size(); ++s) {
+    const std::span<const glm::dvec3> a = solver.elementRadiance(s), b = fresh.elementRadiance(s);
+    for (size_t e = 0; e < a.size(); ++e) {
+      const double d = test::channelSum(glm::abs(a[e] - b[e])) / test::channelSum(b[e]);
+      const double w = test::area(surfaces[s], static_cast<uint32_t>(e));
+      relative.emplace_back(d, w);
+      mean += w * d, total += w;
+    }
+  }
+  mean /= total;
+  std::sort(relative.begin(), relative.end());
+  double p99 = 0;
+  for (double below = 0; const auto& [d, w] : relative)
+    if ((below += w) >= 0.99 * total) {
+      p99 = d;
+      break;
+    }
+  std::printf("%d moves to and fro: %.3f%% mean off a fresh solve per element, 99th percentile %.2f%%, "
+              "ledgers within %.1e\n", moves, 100 * mean, 100 * p99, ledger);
+  EXPECT_LT(mean, 0.005);
+  EXPECT_LT(p99, 0.03);
+  EXPECT_LT(ledger, 1e-9);
 }
 
 // A floor element whose centre is under a box shoots from a point moved off its centre (see
