@@ -51,11 +51,18 @@ MeshAdaptation::MeshAdaptation(const Scene& scene, const MeshedScene& meshed, co
 
 MeshAdaptation::~MeshAdaptation() = default;
 
-mesher::AdaptiveMesh& MeshAdaptation::adaptiveMesh(size_t surface) {
-  if (!adaptive_[surface])
-    adaptive_[surface] = std::make_unique<mesher::AdaptiveMesh>(meshed_.surfaces[surface].polygon,
-                                                                mesher::MeshSettings{scene_.surfaces[surface].patchSize});
-  return *adaptive_[surface];
+mesher::AdaptiveMesh* MeshAdaptation::adaptiveMesh(size_t surface) {
+  if (!adaptive_[surface]) {
+    try {
+      adaptive_[surface] = std::make_unique<mesher::AdaptiveMesh>(meshed_.surfaces[surface].polygon,
+                                                                  mesher::MeshSettings{scene_.surfaces[surface].patchSize});
+    } catch (const mesher::MeshRefused&) {
+      // A surface moved rigidly keeps the mesh made where it was loaded; where it stands now its
+      // detail may be finer than the coordinates resolve. Its mesh stays as it is.
+      return nullptr;
+    }
+  }
+  return adaptive_[surface].get();
 }
 
 size_t MeshAdaptation::pass(radiosity::Solver& solver) {
@@ -75,7 +82,9 @@ size_t MeshAdaptation::pass(radiosity::Solver& solver) {
     // A surface still at its patch size has nothing to coarsen.
     if (verdicts.refineCount == 0 && (!adaptive_[s] || verdicts.coarsenCount == 0)) continue;
 
-    mesher::AdaptiveMesh& mesh = adaptiveMesh(s);
+    mesher::AdaptiveMesh* const adaptive = adaptiveMesh(s);
+    if (!adaptive) continue;
+    mesher::AdaptiveMesh& mesh = *adaptive;
     // The verdicts by slot, with the generation they are for: elements made by this pass's
     // refinement reuse freed slots and must not take the verdicts of what was there.
     const std::vector<mesher::ElementId> ids = mesh.elements();

@@ -58,7 +58,9 @@ class MeshAdaptation {
   uint64_t passes() const { return passes_; }  // passes that changed a mesh
 
  private:
-  mesher::AdaptiveMesh& adaptiveMesh(size_t surface);
+  // The surface's adaptive mesh, made when it is first refined; null when the mesher refuses
+  // the surface where it stands (it is then not refined, and tried again at the next pass).
+  mesher::AdaptiveMesh* adaptiveMesh(size_t surface);
 
   Scene scene_;
   MeshedScene meshed_;

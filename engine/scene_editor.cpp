@@ -50,46 +50,68 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   if (!o.movable) throw std::invalid_argument("object \"" + o.name + "\" is not movable");
   if (!inSceneLimits(pose)) throw std::invalid_argument("object \"" + o.name + "\" would stand beyond the scene limits");
   if (poseOf(o) == pose) return false;
-  o.position = pose.position;
-  o.rotateYDeg = pose.rotateYDeg;
 
   // From the loaded placement to the new one: world = now * home^-1 (a rotation about y and a
   // translation, so the inverse is the transpose).
-  Object home = o;
+  Object home = o, now = o;
   home.position = homePoses_[object].position;
   home.rotateYDeg = homePoses_[object].rotateYDeg;
-  const Placement from = placementOf(home), to = placementOf(o);
+  now.position = pose.position;
+  now.rotateYDeg = pose.rotateYDeg;
+  const Placement from = placementOf(home), to = placementOf(now);
   const glm::dmat3 turn = to.worldFromObject * glm::transpose(from.worldFromObject);
   const bool atHome = pose == homePoses_[object];
   auto place = [&](const Vec3& p) { return atHome ? p : turn * (p - from.translation) + to.translation; };
+  std::vector<Surface> cut = uncut_;
+  std::vector<Surface> placed;  // the object's surfaces as uncut_ is to hold them
   for (uint32_t s : surfacesOf_[object]) {
     const Surface& before = homeSurfaces_[s];
-    Surface& surface = uncut_[s];
+    Surface& surface = cut[s];
     for (size_t i = 0; i < before.outer.size(); ++i) surface.outer[i] = place(before.outer[i]);
     for (size_t h = 0; h < before.holes.size(); ++h)
       for (size_t i = 0; i < before.holes[h].size(); ++i) surface.holes[h][i] = place(before.holes[h][i]);
     surface.normal = atHome ? before.normal : glm::normalize(turn * before.normal);
+    placed.push_back(surface);
   }
 
   // Cut-outs anew; a surface whose footprints changed, or that has or had any while it moves,
-  // is meshed again; the moved object's other surfaces move their meshes along.
-  std::vector<Surface> cut = uncut_;
+  // is meshed again; the moved object's other surfaces move their meshes along. Everything is
+  // meshed before anything changes: a mesh refused (a footprint leaving a sliver a hair wide)
+  // leaves the scene and its meshes as they were.
   cutOutContacts(cut, contactTolerance_);
-  remeshed_.clear();
+  std::vector<uint32_t> changed, remeshed;
+  std::vector<SurfaceMesh> meshes;
   for (uint32_t s = 0; s < cut.size(); ++s) {
     const bool ofObject = scene_.surfaces[s].object == object;
-    const bool rigid = ofObject && homeMesh_[s] && cut[s].contactHoles == 0 && scene_.surfaces[s].contactHoles == 0;
     if (!ofObject && cut[s].holes == scene_.surfaces[s].holes) continue;
+    changed.push_back(s);
+    if (ofObject && homeMesh_[s] && cut[s].contactHoles == 0 && scene_.surfaces[s].contactHoles == 0) continue;  // rigid
+    try {
+      meshes.push_back(meshSurface(cut[s], mesher_));
+    } catch (const mesher::MeshRefused& refused) {
+      const Surface& refusedSurface = cut[s];
+      throw meshRefusal(refused, scene_.file, refusedSurface.jsonPath,
+                        "moving \"" + o.name + "\" there, the " + refusedSurface.face + " of \"" +
+                            scene_.objects[refusedSurface.object].name + "\"");
+    }
+    remeshed.push_back(s);
+  }
+
+  o.position = pose.position;
+  o.rotateYDeg = pose.rotateYDeg;
+  for (size_t k = 0; k < placed.size(); ++k) uncut_[surfacesOf_[object][k]] = std::move(placed[k]);
+  for (size_t k = 0, m = 0; k < changed.size(); ++k) {
+    const uint32_t s = changed[k];
     scene_.surfaces[s] = std::move(cut[s]);
-    if (rigid) {
+    if (m < remeshed.size() && remeshed[m] == s) {
+      meshed_.surfaces[s] = std::move(meshes[m++]);
+      homeMesh_[s] = 0;
+    } else {
       std::vector<Vec3>& positions = meshed_.surfaces[s].positions;
       for (size_t i = 0; i < positions.size(); ++i) positions[i] = place(homePositions_[s][i]);
-    } else {
-      meshed_.surfaces[s] = meshSurface(scene_.surfaces[s], mesher_);
-      homeMesh_[s] = 0;
-      remeshed_.push_back(s);
     }
   }
+  remeshed_ = std::move(remeshed);
   scene_.computeBounds();
   return true;
 }

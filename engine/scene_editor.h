@@ -43,7 +43,10 @@ class SceneEditor {
 
   // Puts `object` at `pose`, surfaces, meshes, cut-outs and scene bounds with it; returns
   // whether anything moved. Throws std::invalid_argument for an object that does not exist or is
-  // not movable, or a pose beyond the scene limits (inSceneLimits).
+  // not movable, or a pose beyond the scene limits (inSceneLimits). Throws SceneError
+  // (MeshTooLarge, MeshTooFine at the surface's JSON path) when a surface to be meshed again is
+  // refused by the mesher (a footprint leaving a sliver of floor a hair wide); the scene, its
+  // meshes and remeshed() are then as they were before the call.
   bool setPose(uint32_t object, const ObjectPose& pose);
   // The surfaces the last setPose meshed again (their element counts may differ); the object's
   // other surfaces kept their meshes.

@@ -100,9 +100,11 @@ SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher) {
   return result;
 }
 
-SceneError meshRefusal(const mesher::MeshRefused& refused, const std::string& file, const std::string& place) {
+SceneError meshRefusal(const mesher::MeshRefused& refused, const std::string& file, const std::string& place,
+                       const std::string& which) {
   const bool tooLarge = refused.reason() == mesher::MeshRefused::Reason::TooLarge;
-  return SceneError(tooLarge ? Diag::MeshTooLarge : Diag::MeshTooFine, file, place, refused.what());
+  return SceneError(tooLarge ? Diag::MeshTooLarge : Diag::MeshTooFine, file, place,
+                    which.empty() ? refused.what() : which + ": " + refused.what());
 }
 
 std::vector<Vec3> worldPositions(const Surface& surface, const std::vector<mesher::Vec2>& vertices) {

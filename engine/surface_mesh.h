@@ -31,8 +31,10 @@ SurfaceMesh meshSurface(const Surface& surface);
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher);
 
 // The scene error for a polygon the mesher refused: MeshTooLarge or MeshTooFine, at `place`
-// (a surface's JSON path, or a polygon case's "outer") of `file`.
-SceneError meshRefusal(const mesher::MeshRefused& refused, const std::string& file, const std::string& place);
+// (a surface's JSON path, or a polygon case's "outer") of `file`; `which`, when given, opens the
+// detail (the face, when the place is a whole solid's).
+SceneError meshRefusal(const mesher::MeshRefused& refused, const std::string& file, const std::string& place,
+                       const std::string& which = {});
 
 // World positions of the vertices of a mesh of `surface` in its plane coordinates (as
 // meshSurface meshes it, or an adaptive mesh of SurfaceMesh::polygon): the surface's own points,

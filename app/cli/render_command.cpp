@@ -128,7 +128,12 @@ int runRender(const RenderOptions& options) {
     start = Clock::now();
     engine::ObjectPose pose = engine::poseOf(editor.scene().objects[move.object]);
     pose.position = move.position;
-    editor.setPose(move.object, pose);
+    try {
+      editor.setPose(move.object, pose);
+    } catch (const engine::SceneError& e) {  // a surface the move would cut is refused by the mesher
+      std::cerr << "walkrad render: --move \"" << options.moves[i] << "\": " << e.what() << "\n";
+      return 2;
+    }
     std::vector<radiosity::Surface> input;
     if (adaptation) {
       adaptation->edit(editor.scene(), editor.meshed());

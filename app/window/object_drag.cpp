@@ -56,7 +56,7 @@ bool ObjectDrag::moveGrabbed() {
   }
   engine::ObjectPose pose = engine::poseOf(editor_.scene().objects[*selected_]);
   pose.position = position;
-  return editor_.setPose(*selected_, pose);
+  return place(pose);
 }
 
 std::optional<engine::PoseEdit> ObjectDrag::release() {
@@ -72,9 +72,19 @@ std::optional<engine::PoseEdit> ObjectDrag::turn(double degrees) {
   const engine::ObjectPose before = engine::poseOf(editor_.scene().objects[*selected_]);
   engine::ObjectPose after = before;
   after.rotateYDeg = std::remainder(before.rotateYDeg + degrees, 360.0);
-  editor_.setPose(*selected_, after);
-  if (dragging_) return std::nullopt;
+  if (!place(after) || dragging_) return std::nullopt;
   return engine::PoseEdit{*selected_, before, after};
+}
+
+bool ObjectDrag::place(const engine::ObjectPose& pose) {
+  try {
+    const bool moved = editor_.setPose(*selected_, pose);
+    refusal_.clear();
+    return moved;
+  } catch (const engine::SceneError& e) {
+    refusal_ = e.what();
+    return false;
+  }
 }
 
 }  // namespace app

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace app {
 
@@ -42,7 +43,14 @@ class ObjectDrag {
   // an object is selected, is movable and not being dragged (a drag records its turns with it).
   std::optional<engine::PoseEdit> turn(double degrees);
 
+  // Why the last move or turn was refused (one line: the mesher refused a surface it would have
+  // meshed again, engine::SceneError); empty once one succeeds. A refused move leaves the object
+  // at its last good pose.
+  const std::string& refusal() const { return refusal_; }
+
  private:
+  // Puts the selected object at `pose`, unless refused; returns whether it moved.
+  bool place(const engine::ObjectPose& pose);
   // Puts the grabbed object where the drag's slide and lift take it, within the scene limits.
   bool moveGrabbed();
 
@@ -53,6 +61,7 @@ class ObjectDrag {
   glm::dvec3 grab_{0};         // the point grabbed, at the drag's start
   double lifted_ = 0;          // height added by the wheel during this drag
   glm::dvec3 slid_{0};         // horizontal offset from the drag's start
+  std::string refusal_;
 };
 
 }  // namespace app

@@ -22,6 +22,9 @@ engine::SceneEditor meshedEditor(engine::Scene scene) {
 SceneEdits::SceneEdits(std::string path, std::string text, engine::Scene scene)
     : path_(std::move(path)), text_(std::move(text)), editor_(meshedEditor(std::move(scene))) {}
 
+// Undo and redo put an object back at a pose the scene stood in, every other object where it
+// stood then: the editor places surfaces from their loaded pose, so the polygons to mesh are bit
+// for bit those it meshed then (SceneEditor tests), and the mesher cannot refuse them.
 std::optional<uint32_t> SceneEdits::undo() {
   if (const auto dragged = drag_.release()) history_.record(*dragged);  // a drag in progress first
   const auto edit = history_.undo();

@@ -66,6 +66,7 @@ void editSection(const engine::Scene& scene, PanelState& state) {
   ImGui::SameLine();
   if (ImGui::Button(state.unsaved ? "save* (Ctrl+S)" : "save (Ctrl+S)")) state.saveRequested = true;
   if (!state.saveReport.empty()) ImGui::TextDisabled("%s", state.saveReport.c_str());
+  if (!state.editReport.empty()) ImGui::TextWrapped("move refused: %s", state.editReport.c_str());
 }
 
 }  // namespace

@@ -29,6 +29,7 @@ struct PanelState {
   double selectedTurn = 0;         // rotate_y, degrees
   bool canUndo = false, canRedo = false, unsaved = false;
   std::string saveReport;          // the last save's one-line report
+  std::string editReport;          // why the last move was refused; empty when it was not
   std::string openReport;          // why the last file dropped onto the window did not open
   bool undoRequested = false, redoRequested = false, saveRequested = false;
 };

@@ -269,7 +269,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     leftWasDown = leftDown;
     if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) {
       const auto turned = drag.turn(pressed(GLFW_KEY_R) ? 15 : -15);
-      if (drag.selected() && scene.objects[*drag.selected()].movable) showMoved(*drag.selected());
+      if (drag.selected() && scene.objects[*drag.selected()].movable && drag.refusal().empty()) showMoved(*drag.selected());
       recordEdit(turned);
     }
     if (pressed(GLFW_KEY_ESCAPE)) {
@@ -283,6 +283,10 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       std::cout << "walkrad view: " << panel.saveReport << std::endl;
     }
     panel.undoRequested = panel.redoRequested = panel.saveRequested = false;
+    if (drag.refusal() != panel.editReport) {
+      panel.editReport = drag.refusal();
+      if (!panel.editReport.empty()) std::cout << "walkrad view: move refused: " << panel.editReport << std::endl;
+    }
 
     std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
     if (newest != shown) {

@@ -74,6 +74,30 @@ TEST(ObjectDrag, ADragStopsAtTheSceneLimits) {
   EXPECT_TRUE(engine::inSceneLimits(edit->after));
 }
 
+// Dragged so that its footprint would leave a strip of floor 3 um wide 900 km from the origin
+// (finer than the mesher resolves there: engine's SceneEditor test), the box stays at its last
+// good pose and the drag says why; dragged on, it follows again and the drag is one edit.
+TEST(ObjectDrag, ADragThatWouldLeaveASliverTooFineStopsAtTheLastGoodPose) {
+  const std::string path = std::string(WALKRAD_SOURCE) + "/tests/cli/far_room_box.json";
+  SceneEdits edits(path, "", engine::loadScene(path));
+  ObjectDrag& drag = edits.drag();
+  const auto below = [](double x, double z) { return Ray{{x, 0.9, z}, {0, -1, 0}}; };  // under the ceiling
+  ASSERT_TRUE(drag.press(below(900000.5, 900000.5)));  // the box's top, its origin 0.1 away
+  const engine::Object& box = edits.editor().scene().objects[*drag.selected()];
+  ASSERT_TRUE(drag.follow(below(900000.6, 900000.5)));
+  const engine::ObjectPose good = engine::poseOf(box);
+  const size_t floorElements = edits.editor().meshed().surfaces[edits.editor().remeshed().at(0)].mesh.elements.size();
+  EXPECT_FALSE(drag.follow(below(900000.100003, 900000.5)));  // its side 3 um from the wall x = 900000
+  EXPECT_EQ(engine::poseOf(box), good);
+  EXPECT_NE(drag.refusal().find("detail finer than the coordinates resolve"), std::string::npos) << drag.refusal();
+  EXPECT_EQ(edits.editor().meshed().surfaces[edits.editor().remeshed().at(0)].mesh.elements.size(), floorElements);
+  EXPECT_TRUE(drag.follow(below(900000.3, 900000.5)));
+  EXPECT_EQ(drag.refusal(), "");
+  const auto edit = drag.release();
+  ASSERT_TRUE(edit);
+  EXPECT_EQ(edit->after, engine::poseOf(box));
+}
+
 TEST(ObjectDrag, FixedObjectsAreSelectedButNotDragged) {
   SceneEdits edits = editsOf();
   ObjectDrag& drag = edits.drag();

@@ -141,6 +141,12 @@ walkrad_cli_test(render_move 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.
                  JSON ${out}/cli-move.json
                  JSON_NUMBERS moves.0.remesh_ms moves.0.first_update_ms moves.0.converge_ms moves.0.elements_changed
                               moves.0.corrections moves.0.windowed_corrections moves.1.converge_ms)
+# A move whose footprint leaves a strip of floor 3 um wide 900 km from the origin, finer than the
+# mesher resolves there: exit 2 naming the option and the floor; no picture is written.
+walkrad_cli_test(render_move_sliver 2 ARGS render ${cli_dir}/far_room_box.json --out ${out}/cli-move-sliver.png
+                 --converge 0.5 --width 32 --height 24 --move "box:-0.399997,0,0"
+                 STDERR "^walkrad render: --move \"box:-0.399997,0,0\": .*far_room_box.json: objects\\[0\\]\\.solids\\[0\\]: detail finer than the coordinates resolve.*: moving \"box\" there, the bottom of \"room\": "
+                 NO_FILE ${out}/cli-move-sliver.png)
 walkrad_cli_test(render_move_fixed 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png
                  --move "room:1,0,0" STDERR "--move \"room:1,0,0\": \"room\" is not movable")
 walkrad_cli_test(render_move_unknown 2 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.json --out ${out}/x.png

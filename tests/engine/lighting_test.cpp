@@ -134,5 +134,51 @@ TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
   EXPECT_EQ(moved->radiance.size(), displayMesh(*moved->meshed).positions.size());
 }
 
+// A room 524,287 m from the origin and a slab floating in it whose top has a small open hole
+// 5 um from its edge. Where the slab is loaded its plane coordinates are below 2^19 and the
+// mesher resolves 3.8 um; moved 1 m on they are above, and it resolves only 7.6 um.
+constexpr const char* kFarSlab = R"({
+  "format": "walkrad-scene/1", "units": "m", "settings": { "patch_size": 0.25 },
+  "materials": { "white": { "reflectance": [0.5, 0.5, 0.5] }, "lamp": { "reflectance": [0.5, 0.5, 0.5], "emission": [4, 4, 4] } },
+  "objects": [
+    { "name": "room", "movable": false,
+      "solids": [ { "profile": [[524286, 0], [524290, 0], [524290, 2], [524286, 2]], "from": 0, "to": 2, "inward": true,
+                    "material": "white",
+                    "faces": { "top": { "holes": [ { "polygon": [[524287.5, 0.5], [524288.5, 0.5], [524288.5, 1.5], [524287.5, 1.5]],
+                                                     "fill": "lamp" } ] } } } ] },
+    { "name": "slab", "position": [524286.5, 0.5, 0.5],
+      "solids": [ { "profile": [[0, 0], [1, 0], [1, 1], [0, 1]], "from": 0, "to": 0.1, "material": "white",
+                    "faces": { "top": { "holes": [ { "polygon": [[0.5, 5e-6], [0.51, 5e-6], [0.51, 0.01], [0.5, 0.01]] } ] } } } ] }
+  ] })";
+
+// Moved rigidly, the slab keeps its loaded mesh; the adaptive passes that would refine its top
+// where it now stands find the mesher refuses it there, and refine the rest: the lighting thread
+// converges after the edit with no error.
+TEST(Lighting, AdaptivePassesPassOverASurfaceTheMesherRefusesWhereItNowStands) {
+  Scene loaded = parseScene(kFarSlab, "far-slab.json");
+  MeshedScene meshed = meshScene(loaded);
+  SceneEditor editor(std::move(loaded), std::move(meshed));
+  LightingSettings settings;
+  settings.converge = 0.05;
+  settings.solver.resolution = 128;
+  settings.adaptive = radiosity::RefinementSettings{.threshold = 0.01};
+  LightingThread lighting(editor.scene(), editor.meshed(), settings);
+  const uint32_t slab = *editor.findObject("slab");
+  ObjectPose pose = poseOf(editor.scene().objects[slab]);
+  pose.position.x += 1;
+  ASSERT_TRUE(editor.setPose(slab, pose));
+  const Surface* top = nullptr;
+  for (const Surface& s : editor.scene().surfaces)
+    if (s.object == slab && s.normal.y > 0.5) top = &s;
+  ASSERT_NE(top, nullptr);
+  EXPECT_THROW(meshSurface(*top), mesher::MeshRefused);  // the premise: refused where it stands
+
+  lighting.edit(editor.scene(), editor.meshed());
+  const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && (s.converged || !s.error.empty()); });
+  EXPECT_EQ(done->error, "");
+  EXPECT_TRUE(done->converged);
+  EXPECT_GT(done->adaptivePasses, 0u);
+}
+
 }  // namespace
 }  // namespace engine

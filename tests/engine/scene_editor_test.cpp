@@ -131,6 +131,56 @@ TEST(SceneEditor, BoundsFollowAnObjectLeavingTheRoom) {
   EXPECT_EQ(editor.scene().boundsMax.x, 12);
 }
 
+// The meshes of two editors' scenes are alike, element for element and point for point.
+void expectSameMeshes(const MeshedScene& a, const MeshedScene& b) {
+  ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
+  for (size_t s = 0; s < a.surfaces.size(); ++s) {
+    EXPECT_EQ(a.surfaces[s].mesh.elements, b.surfaces[s].mesh.elements) << "surface " << s;
+    EXPECT_EQ(a.surfaces[s].positions, b.surfaces[s].positions) << "surface " << s;
+  }
+}
+
+// A room 1 m wide 900 km from the origin: a box slid to 3 um from its wall leaves a strip of
+// floor wider than the contact tolerance (1e-6 of the scene's extent), so it is cut out, but
+// narrower than the mesher resolves at coordinates of 9e5 (about 4096 roundings, 7.6 um). The
+// move is refused at the floor, and nothing of it is applied; the box moves on from where it was.
+TEST(SceneEditor, AMoveWhoseFootprintLeavesASliverTooFineIsRefusedWhole) {
+  Scene loaded = loadScene(std::string(WALKRAD_SOURCE) + "/tests/cli/far_room_box.json");
+  MeshedScene meshed = meshScene(loaded);
+  SceneEditor editor(std::move(loaded), std::move(meshed));
+  const uint32_t box = *editor.findObject("box");
+  ASSERT_TRUE(editor.setPose(box, {Vec3{900000.5, 0, 900000.4}, 0}));  // remeshes the floor
+  const Scene before = editor.scene();
+  const MeshedScene meshedBefore = editor.meshed();
+  const std::vector<uint32_t> remeshedBefore = editor.remeshed();
+  const Surface& floor = test::surfaceOf(before, "room", "bottom");
+  try {
+    editor.setPose(box, {Vec3{900000 + 3e-6, 0, 900000.4}, 0});
+    FAIL() << "the move was not refused";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.diag(), Diag::MeshTooFine);
+    EXPECT_EQ(e.place(), floor.jsonPath);
+  }
+  EXPECT_EQ(poseOf(editor.scene().objects[box]), poseOf(before.objects[box]));
+  EXPECT_EQ(editor.scene().boundsMin, before.boundsMin);
+  EXPECT_EQ(editor.scene().boundsMax, before.boundsMax);
+  EXPECT_EQ(editor.remeshed(), remeshedBefore);
+  for (size_t s = 0; s < before.surfaces.size(); ++s) {
+    EXPECT_EQ(editor.scene().surfaces[s].outer, before.surfaces[s].outer) << "surface " << s;
+    EXPECT_EQ(editor.scene().surfaces[s].holes, before.surfaces[s].holes) << "surface " << s;
+  }
+  expectSameMeshes(editor.meshed(), meshedBefore);
+
+  // Moving on from the last good pose works as from any other, and coming home restores the
+  // loaded meshes.
+  EXPECT_TRUE(editor.setPose(box, {Vec3{900000.3, 0, 900000.6}, 0}));
+  EXPECT_EQ(test::surfaceOf(editor.scene(), "room", "bottom").holes.size(), 1u);
+  Scene home = loadScene(std::string(WALKRAD_SOURCE) + "/tests/cli/far_room_box.json");
+  const MeshedScene homeMeshed = meshScene(home);
+  EXPECT_TRUE(editor.setPose(box, poseOf(home.objects[box])));
+  expectSameMeshes(editor.meshed(), homeMeshed);
+}
+
 TEST(EditHistory, UndoRedoAndTheSavedState) {
   EditHistory history;
   EXPECT_FALSE(history.undo());
