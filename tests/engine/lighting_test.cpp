@@ -63,11 +63,9 @@ TEST(Lighting, PauseStopsShootingAndRestartStartsOver) {
   LightingThread lighting(radiosityInput(scene, meshed), settings);
   waitFor(lighting, [](const LightingSnapshot& s) { return s.shots >= 5; });
   lighting.setPaused(true);
-  waitFor(lighting, [](const LightingSnapshot& s) { return s.paused; });
-  // The shot in flight lands and is shown (with any others since the last snapshot); then
-  // nothing more is shot.
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  const auto settled = lighting.latest();
+  // The first paused snapshot comes once the shot in flight has landed, and shows it (with any
+  // others since the last snapshot); then nothing more is shot, however long a shot takes.
+  const auto settled = waitFor(lighting, [](const LightingSnapshot& s) { return s.paused; });
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   const auto later = lighting.latest();
   EXPECT_TRUE(later->paused);
