@@ -68,15 +68,19 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
       const auto ready = [&] {
         return stop_ || restart_ || editsApplied_ < editsRequested_ || (!paused_ && !done && !failed);
       };
-      if (!ready() && unpublished) {
+      // A pause (or its end) is shown by the thread once no shot is in flight, so a paused
+      // snapshot shows every shot. After a failure the error snapshot stays.
+      const auto pauseUnshown = [&] { return !failed && latest_->paused != paused_; };
+      if (!ready() && (unpublished || pauseUnshown())) {
         // About to wait (paused): the shots since the last snapshot are shown first.
         lock.unlock();
         publish(*solver, done);
         unpublished = false;
-        lock.lock();
+        continue;  // the pause may have changed meanwhile
       }
-      wake_.wait(lock, ready);
+      wake_.wait(lock, [&] { return ready() || pauseUnshown(); });
       if (stop_) return;
+      if (!ready()) continue;  // woken to show a pause
       if (restart_ || editsApplied_ < editsRequested_) {
         const bool edited = editsApplied_ < editsRequested_;
         restart_ = false;
@@ -153,21 +157,11 @@ std::shared_ptr<const LightingSnapshot> LightingThread::latest() const {
 }
 
 void LightingThread::setPaused(bool paused) {
-  std::shared_ptr<const LightingSnapshot> current;
   {
     std::lock_guard lock(mutex_);
     paused_ = paused;
-    current = latest_;
   }
   wake_.notify_all();
-  // The newest snapshot says so at once; copied outside the lock, so publish never waits on it.
-  if (!current || current->paused == paused) return;
-  auto copy = std::make_shared<LightingSnapshot>(*current);
-  copy->paused = paused;
-  std::lock_guard lock(mutex_);
-  if (latest_ != current) return;  // the thread has published since, with the flag
-  copy->version = ++version_;
-  latest_ = std::move(copy);
 }
 
 void LightingThread::restart() {

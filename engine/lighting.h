@@ -58,7 +58,8 @@ struct LightingSnapshot {
   double solveSeconds = 0;             // time spent shooting
   double shotsPerSecond = 0;
   size_t elements = 0, patches = 0;
-  bool converged = false, paused = false;
+  bool converged = false;
+  bool paused = false;                 // shooting has stopped: the radiance shows every shot
   uint64_t edits = 0;                  // scene edits the radiance takes into account
   // With adaptive refinement: the meshes the radiance is for (a new pointer whenever they
   // changed), and the passes that changed them. Without: null, and the radiance is for the
@@ -84,8 +85,8 @@ class LightingThread {
   // The newest snapshot (the first is published before the first shot). Never waits for a shot.
   std::shared_ptr<const LightingSnapshot> latest() const;
 
-  // Pausing takes effect after the shot in flight (whose light the paused snapshot shows);
-  // restarting throws the solution away and starts again from the emitters.
+  // Pausing takes effect after the shot in flight; the first paused snapshot comes then and
+  // shows its light. Restarting throws the solution away and starts again from the emitters.
   void setPaused(bool paused);
   void restart();
   // The scene changed (an object moved): `surfaces` replace the old ones, in the same order with

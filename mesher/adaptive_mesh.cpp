@@ -1,13 +1,16 @@
 #include "mesher/adaptive_mesh.h"
 
 #include "mesher/classify.h"
+#include "mesher/mesh_check.h"
 #include "mesher/quality_refinement.h"
 #include "mesher/wedge_handover.h"
+#include "util/check.h"
 
 #include <glm/common.hpp>
 
 #include <algorithm>
 #include <unordered_set>
+#include <utility>
 
 namespace mesher {
 
@@ -28,7 +31,7 @@ bool inTree(const Quadtree& tree, int32_t q) {
 }  // namespace
 
 AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
-    : built_(buildMeshTree(polygon, settings)) {
+    : polygon_(polygon), built_(buildMeshTree(polygon, settings)) {
   handsOver_ = std::find(built_.tree.input.shallow.begin(), built_.tree.input.shallow.end(), 1) != built_.tree.input.shallow.end();
   std::vector<int32_t> leaves = built_.tree.leaves(), shortLeaves;
   emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
@@ -78,6 +81,8 @@ Mesh AdaptiveMesh::snapshot() const {
     if (slot.alive) mesh.elements.push_back(slot.corners);
   return mesh;
 }
+
+size_t AdaptiveMesh::tVertices() const { return checkMesh(polygon_, snapshot()).tVertices; }
 
 void AdaptiveMesh::emitLeaf(int32_t leaf, MeshDelta& delta) {
   const size_t size = built_.tree.quadrants.size();
@@ -163,7 +168,7 @@ MeshDelta AdaptiveMesh::applyChanges(uint32_t firstNewVertex, const std::vector<
   return delta;
 }
 
-MeshDelta AdaptiveMesh::refine(ElementId e) {
+MeshDelta AdaptiveMesh::refineQuadrant(ElementId e) {
   Quadtree& tree = built_.tree;
   const int32_t q = slots_[e.slot].leaf;
   const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
@@ -197,7 +202,7 @@ void AdaptiveMesh::mergeUnneededBalanceSplits(std::vector<int32_t> candidates) {
   }
 }
 
-MeshDelta AdaptiveMesh::coarsen(ElementId e) {
+MeshDelta AdaptiveMesh::coarsenQuadrant(ElementId e) {
   Quadtree& tree = built_.tree;
   const int32_t parent = tree[slots_[e.slot].leaf].parent;
   const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
@@ -215,6 +220,18 @@ MeshDelta AdaptiveMesh::coarsen(ElementId e) {
   return applyChanges(firstNewVertex);
 }
 
+MeshDelta AdaptiveMesh::refine(ElementId e) {
+  MeshDelta delta = refineQuadrant(e);
+  DCHECK_EQ(tVertices(), 0u);
+  return delta;
+}
+
+MeshDelta AdaptiveMesh::coarsen(ElementId e) {
+  MeshDelta delta = coarsenQuadrant(e);
+  DCHECK_EQ(tVertices(), 0u);
+  return delta;
+}
+
 MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
                               const std::function<bool(ElementId)>& coarsenIt) {
   MeshDelta total;
@@ -224,7 +241,7 @@ MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
     total.added.insert(total.added.end(), d.added.begin(), d.added.end());
   };
   for (ElementId e : elements())
-    if (alive(e) && refineIt(e)) collect(refine(e));
+    if (alive(e) && refineIt(e)) collect(refineQuadrant(e));
   // Coarsening asks each of the four siblings: merge only when every one agrees.
   for (ElementId e : elements()) {
     if (!alive(e) || !coarsenIt(e)) continue;
@@ -236,7 +253,7 @@ MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
       else if (static_cast<size_t>(c) < leafSlots_.size())
         for (uint32_t s : leafSlots_[static_cast<size_t>(c)]) allAgree = allAgree && coarsenIt({s, slots_[s].generation});
     }
-    if (allAgree) collect(coarsen(e));
+    if (allAgree) collect(coarsenQuadrant(e));
   }
   // Elements both added and removed within the pass never reached the caller.
   std::unordered_set<uint64_t> addedHere;
@@ -249,6 +266,7 @@ MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
   total.removed = std::move(removed);
   total.added = std::move(added);
   total.vertexCount = static_cast<uint32_t>(vertices().size());
+  DCHECK_EQ(tVertices(), 0u);
   return total;
 }
 
@@ -322,7 +340,9 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
     if (!change.isMerge()) tree.leavesBelow(change.quadrant, seeds);
   balanceAround(tree, std::move(seeds));
   holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
-  return {static_cast<int>(holes_.size() - 1), applyChanges(firstNewVertex, around)};
+  MeshDelta delta = applyChanges(firstNewVertex, around);
+  DCHECK_EQ(tVertices(), 0u);
+  return {static_cast<int>(holes_.size() - 1), std::move(delta)};
 }
 
 MeshDelta AdaptiveMesh::removeHole(int hole) {
@@ -364,7 +384,9 @@ MeshDelta AdaptiveMesh::removeHole(int hole) {
   around.clear();
   tree.leavesIn(h.lo, h.hi, around);
   balanceAround(tree, around);
-  return applyChanges(firstNewVertex, restyled);
+  MeshDelta delta = applyChanges(firstNewVertex, restyled);
+  DCHECK_EQ(tVertices(), 0u);
+  return delta;
 }
 
 }  // namespace mesher

@@ -84,11 +84,18 @@ class AdaptiveMesh {
     bool alive = false;
   };
 
+  // refine() and coarsen() but for their check, which adapt() makes once for its pass.
+  MeshDelta refineQuadrant(ElementId e);
+  MeshDelta coarsenQuadrant(ElementId e);
+  // The live mesh's T-vertices as the independent check (mesh_check.h) counts them: 0 after
+  // every change (checked in debug builds).
+  size_t tVertices() const;
   MeshDelta applyChanges(uint32_t firstNewVertex, const std::vector<int32_t>& restyled = {});
   void removeLeafElements(int32_t leaf, MeshDelta& delta);
   void emitLeaf(int32_t leaf, MeshDelta& delta);
   void mergeUnneededBalanceSplits(std::vector<int32_t> candidates);
 
+  PolygonWithHoles polygon_;  // as given (inserted holes not added): the check's measure of scale
   PolygonTree built_;
   std::unique_ptr<LeafEmitter> emitter_;
   std::vector<Slot> slots_;

@@ -156,6 +156,10 @@ class Solver {
   // The unshot power per channel, signed (after an edit some light is negative), without the
   // corrections still pending: the term of the power ledgers (Stats).
   glm::dvec3 unshotPower() const;
+  // How far the power ledgers (Stats) are from closing: |emitted - absorbed - back - escaped -
+  // removed - unshotPower()| over emitted, channels summed. Rounding only (below 1e-9) after
+  // every step; 0 for a scene that emits nothing.
+  double ledgerResidual() const;
 
   // Steps until converged(fraction) or `maxShots` shots in this call. Returns the shots taken.
   uint64_t solve(double fraction, uint64_t maxShots = UINT64_MAX);

@@ -37,6 +37,7 @@
 #include "radiosity/windowed_correction.h"
 
 #include "pxpl5/hemisphere.h"
+#include "util/check.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -56,6 +57,9 @@ namespace radiosity {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// Every shot and every take-back moves light from ledger to ledger and loses none: what is left
+// is rounding (debug builds check it after each step).
+constexpr double kLedgerTolerance = 1e-9;
 
 double channelSum(const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
 
@@ -1484,6 +1488,7 @@ bool Solver::step() {
   const auto start = std::chrono::steady_clock::now();
   if (correct()) {
     state_->stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    DCHECK_LT(ledgerResidual(), kLedgerTolerance);
     return true;
   }
   State& s = *state_;
@@ -1499,6 +1504,7 @@ bool Solver::step() {
   s.shoot(next->patch, frame);
   ++s.stats.shots;
   s.stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  DCHECK_LT(ledgerResidual(), kLedgerTolerance);
   return true;
 }
 
@@ -1516,6 +1522,16 @@ glm::dvec3 Solver::unshotPower() const {
   glm::dvec3 power{0};
   for (size_t p = 0; p < s.unshot.size(); ++p) power += kPi * s.unshot[p] * s.patchArea[p];
   return power;
+}
+
+double Solver::ledgerResidual() const {
+  const Stats& s = state_->stats;
+  const auto sum = [](const glm::dvec3& v) { return v.x + v.y + v.z; };  // signed, unlike channelSum
+  const double emitted = sum(s.emittedPower);
+  if (emitted <= 0) return 0;
+  return std::abs(emitted - sum(s.absorbedPower) - sum(s.backPower) - sum(s.escapedPower) - sum(s.removedPower) -
+                  sum(unshotPower())) /
+         emitted;
 }
 
 uint64_t Solver::solve(double fraction, uint64_t maxShots) {

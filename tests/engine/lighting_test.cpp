@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 namespace engine {
@@ -63,11 +64,9 @@ TEST(Lighting, PauseStopsShootingAndRestartStartsOver) {
   LightingThread lighting(radiosityInput(scene, meshed), settings);
   waitFor(lighting, [](const LightingSnapshot& s) { return s.shots >= 5; });
   lighting.setPaused(true);
-  waitFor(lighting, [](const LightingSnapshot& s) { return s.paused; });
-  // The shot in flight lands and is shown (with any others since the last snapshot); then
-  // nothing more is shot.
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  const auto settled = lighting.latest();
+  // The first paused snapshot comes once the shot in flight has landed, and shows it (with any
+  // others since the last snapshot); then nothing more is shot, however long a shot takes.
+  const auto settled = waitFor(lighting, [](const LightingSnapshot& s) { return s.paused; });
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   const auto later = lighting.latest();
   EXPECT_TRUE(later->paused);
@@ -94,6 +93,43 @@ TEST(Lighting, APausedSnapshotShowsEveryShot) {
   const auto paused = waitFor(lighting, [](const LightingSnapshot& s) { return s.paused && s.shots > 0; });
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   EXPECT_EQ(lighting.latest()->shots, paused->shots);  // nothing shot since
+}
+
+// Moves sent while the thread shoots (on two graphics processors), with a pause between them,
+// are all taken in: the last snapshot counts them, and with the object back where it was its
+// light is the unmoved scene's (within 0.5%, as EditPath.MovingAnObjectAndBackRestoresTheSolution).
+TEST(Lighting, MovesSentWhileShootingAreAllTakenIn) {
+  SceneEditor editor(loadAsset("cornell.json"), meshScene(loadAsset("cornell.json")));
+  LightingSettings settings;
+  settings.converge = 0.002;
+  settings.solver.graphicsProcessors = 2;
+  LightingThread lighting(editor.scene(), editor.meshed(), settings);
+  const uint32_t block = *editor.findObject("short block");
+  const ObjectPose home = poseOf(editor.scene().objects[block]);
+  uint64_t sent = 0;
+  for (const Vec3 offset : {Vec3{120, 0, 100}, Vec3{-60, 0, 40}, Vec3{0, 0, 0}}) {
+    // The last move taken in: its corrections are being shot.
+    waitFor(lighting, [&](const LightingSnapshot& s) { return s.edits == sent; });
+    if (sent == 1) {
+      lighting.setPaused(true);
+      lighting.setPaused(false);
+    }
+    editor.setPose(block, {home.position + offset, home.rotateYDeg});
+    lighting.edit(editor.scene(), editor.meshed());
+    ++sent;
+  }
+  const auto done = waitFor(lighting, [&](const LightingSnapshot& s) { return s.edits == sent && s.converged; });
+  EXPECT_FALSE(done->paused);
+
+  radiosity::Solver unmoved(radiosityInput(editor.scene(), editor.meshed()), settings.solver);
+  unmoved.solve(settings.converge);
+  std::vector<glm::vec3> here;
+  displayRadiance(unmoved, here);
+  ASSERT_EQ(here.size(), done->radiance.size());
+  double difference = 0, level = 0;
+  for (size_t v = 0; v < here.size(); ++v)
+    for (int c = 0; c < 3; ++c) difference += std::abs(done->radiance[v][c] - here[v][c]), level += std::abs(here[v][c]);
+  EXPECT_LT(difference / level, 0.005);
 }
 
 // With adaptive refinement the thread publishes its meshes with the radiance, and comes to what a

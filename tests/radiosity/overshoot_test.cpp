@@ -22,7 +22,6 @@ SolverSettings overshooting() {
 }
 
 using test::channelSum;
-using test::ledgerResidual;
 using test::meanDifference;
 using test::quad;
 using test::roomWithBoard;
@@ -75,7 +74,7 @@ TEST(RadiosityOvershoot, LedgersStayExactWithNegativeUnshotLight) {
   bool negative = false;
   double worst = 0;
   while (!solver.converged(1e-4) && solver.step()) {
-    worst = std::max(worst, ledgerResidual(solver));
+    worst = std::max(worst, solver.ledgerResidual());
     // Magnitudes summed exceed the signed sum only where some unshot light is negative.
     negative = negative || solver.unshotFraction() * channelSum(solver.stats().emittedPower) >
                                channelSum(solver.unshotPower()) * (1 + 1e-9);
@@ -99,7 +98,7 @@ TEST(RadiosityOvershoot, AnOvershootThatDoesNotComeBackIsShotBack) {
   const uint64_t shots = solver.solve(1e-6, 1000);
   EXPECT_TRUE(solver.converged(1e-6)) << shots << " shots";
   EXPECT_LT(shots, 100u);
-  EXPECT_LT(ledgerResidual(solver), 1e-12);
+  EXPECT_LT(solver.ledgerResidual(), 1e-12);
 }
 
 // A furnace: exact E / (1 - rho) everywhere within 0.1%, as without overshooting.
@@ -123,7 +122,7 @@ TEST(RadiosityOvershoot, AnEditIsCorrectedAsAFreshSolve) {
   solver.solve(1e-4);
   solver.edit(roomWithBoard(0.25, 0.4));
   solver.solve(1e-4);
-  EXPECT_LT(ledgerResidual(solver), 1e-12);
+  EXPECT_LT(solver.ledgerResidual(), 1e-12);
   Solver fresh(roomWithBoard(0.25, 0.4), overshooting());
   fresh.solve(1e-4);
   const double worst = worstDifference(solver, fresh);

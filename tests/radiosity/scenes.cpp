@@ -67,14 +67,6 @@ glm::dvec3 areaTimesRadiance(const Solver& solver, const Surface& surface, uint3
 
 double channelSum(const glm::dvec3& v) { return v.x + v.y + v.z; }
 
-double ledgerResidual(const Solver& solver) {
-  const Stats& s = solver.stats();
-  const double emitted = channelSum(s.emittedPower);
-  return std::abs(emitted - channelSum(s.absorbedPower) - channelSum(s.backPower) - channelSum(s.escapedPower) -
-                  channelSum(s.removedPower) - channelSum(solver.unshotPower())) /
-         emitted;
-}
-
 double meanDifference(const Solver& a, const Solver& b) {
   double diff = 0, level = 0;
   for (uint32_t s = 0; s < a.surfaceCount(); ++s) {

@@ -37,10 +37,6 @@ double area(const Surface& surface, uint32_t element);
 
 double channelSum(const glm::dvec3& v);
 
-// |emitted - absorbed - back - escaped - removed - unshot| / emitted, all channels summed and the
-// unshot term signed: zero when the solver's ledgers close.
-double ledgerResidual(const Solver& solver);
-
 // Mean absolute difference of element radiance over the mean, all surfaces (`b` the reference).
 double meanDifference(const Solver& a, const Solver& b);
 
