@@ -147,7 +147,7 @@ TEST(RadiosityEdit, MovingToAndFroManyTimesDoesNotDrift) {
   for (int move = 1; move <= moves; ++move) {
     solver.edit(scene(move % 2 == 1));
     solver.solve(1e-3);
-    ledger = std::max(ledger, ledgerResidual(solver));
+    ledger = std::max(ledger, solver.ledgerResidual());
   }
   Solver fresh(scene(false), settings);
   fresh.solve(1e-3);
