@@ -30,6 +30,19 @@ TEST(Polygon, ConvexityIgnoresWindingAndCollinearCorners) {
   EXPECT_FALSE(isConvex({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}));  // a notch
 }
 
+// Edges running back along each other turn half a circle at each end of the fold, once as +0 and
+// once as -0 (the fuzzed profile of tests/fuzz/regressions/scene_text/bottom_face_crosses_itself):
+// summed, the two turns cancel and the ring, a triangle with a spike along one side, turned once.
+TEST(Polygon, EdgesFoldingBackAreNotConvex) {
+  const Ring2 spiked{{0, 1}, {0, 0}, {1, 2}, {0, 2}, {0, -1}};
+  EXPECT_FALSE(isConvex(spiked));
+  EXPECT_FALSE(isConvex(Ring2(spiked.rbegin(), spiked.rend())));
+  Ring2 mirrored;
+  for (Vec2 p : spiked) mirrored.push_back({-p.x, p.y});
+  EXPECT_FALSE(isConvex(mirrored));
+  EXPECT_FALSE(isConvex(Ring2(mirrored.rbegin(), mirrored.rend())));
+}
+
 TEST(Polygon, APentagramTurnsOneWayButIsNotConvex) {
   Ring2 star;
   for (int i = 0; i < 5; ++i) {
