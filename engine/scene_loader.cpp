@@ -7,6 +7,7 @@
 #include "engine/input_file.h"
 #include "engine/json_reader.h"
 #include "engine/solid_surfaces.h"
+#include "mesher/polygon.h"
 
 #include <glm/common.hpp>
 
@@ -24,6 +25,14 @@ constexpr double kMinLength = 1e-9;   // shorter edges and sweeps are degenerate
 constexpr int kMaxSlices = 256;
 constexpr size_t kMaxPolygonPoints = 1024;  // per profile or hole
 constexpr size_t kMaxHolesPerFace = 256;    // the display's hole bridging is quadratic in points
+
+// The triangles fanned from the first point, each counted positive: a convex ring's area, and
+// zero only when every point lies on one line (a bowtie's signed area is zero too).
+double fanArea(const mesher::Ring2& ring) {
+  double twice = 0;
+  for (size_t i = 1; i + 1 < ring.size(); ++i) twice += std::abs(mesher::orient2(ring[0], ring[i], ring[i + 1]));
+  return twice / 2;
+}
 
 class SceneParser {
  public:
@@ -161,9 +170,9 @@ class SceneParser {
   void checkConvexProfile(const mesher::Ring2& profile, const std::string& path) const {
     const double size = mesher::extent(profile);
     checkPolygonPoints(profile, path);
+    // Area first: points on one line fold back too, where "no area" says more than "not convex".
+    if (fanArea(profile) <= 1e-12 * size * size) in_.fail(Diag::Degenerate, path, "no area");
     if (!mesher::isConvex(profile)) in_.fail(Diag::NotConvex, path);
-    if (std::abs(mesher::signedArea(profile)) <= 1e-12 * size * size)
-      in_.fail(Diag::Degenerate, path, "no area");
   }
 
   // Shared by profiles and holes: not too many points, none repeating its neighbour.

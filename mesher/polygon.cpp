@@ -164,7 +164,11 @@ bool isConvex(const Ring2& ring, double tolerance) {
     // The sine of the turn at each corner, so a small notch is caught however large the ring.
     const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
     const double lengths = glm::length(b - a) * glm::length(c - b);
-    if (lengths > 0 && orient2(a, b, c) * sign < -tolerance * lengths) return false;
+    const double turn = orient2(a, b, c) * sign;
+    if (lengths > 0 && turn < -tolerance * lengths) return false;
+    // An edge running back along the one before turns half a circle, which the sum below counts
+    // as +pi or -pi by the sign of a zero: a fold out and back again would cancel to nothing.
+    if (turn <= 0 && glm::dot(b - a, c - b) < 0) return false;
   }
   // A ring that winds around twice turns one way everywhere but is not convex.
   double angle = 0;

@@ -26,10 +26,10 @@ Vec2 centroid(const Ring2& ring);
 // Largest coordinate extent of the ring's bounding box; 0 for an empty ring.
 double extent(const Ring2& ring);
 
-// True when the ring turns one way only, once around: no reflex corner. Collinear corners are
-// allowed, and so are corners turning the wrong way by less than `tolerance` (the sine of the
-// turn: rounding of collinear points). Needs at least 3 points and non-zero area to be
-// meaningful (checked separately).
+// True when the ring turns one way only, once around: no reflex corner and no edge folding back
+// along the one before. Collinear corners are allowed, and so are corners turning the wrong way
+// by less than `tolerance` (the sine of the turn: rounding of collinear points). Needs at least 3
+// points and non-zero area to be meaningful (checked separately).
 bool isConvex(const Ring2& ring, double tolerance = 1e-6);
 
 // True when no two non-adjacent edges of the ring touch and no edge has zero length.

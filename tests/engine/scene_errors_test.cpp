@@ -79,6 +79,10 @@ const ErrorCase kCases[] = {
     {"profile a bowtie", [](Json& j) { box(j)["profile"] = {{0, 0}, {2, 2}, {2, 0}, {0, 2}}; }, Diag::NotConvex, "objects[1].solids[0].profile"},
     {"profile a pentagram", [](Json& j) { box(j)["profile"] = {{1, 0}, {-0.809, 0.588}, {0.309, -0.951}, {0.309, 0.951}, {-0.809, -0.588}}; },
      Diag::NotConvex, "objects[1].solids[0].profile"},
+    // The fuzzed profile of tests/fuzz/regressions/scene_text/bottom_face_crosses_itself, moved
+    // and scaled: a triangle whose side at x = 1 runs out, back and out again.
+    {"profile folding back along a side", [](Json& j) { box(j)["profile"] = {{1, 1.5}, {1, 1}, {2, 2}, {1, 2}, {1, 0.5}}; },
+     Diag::NotConvex, "objects[1].solids[0].profile"},
     {"profile repeats a point", [](Json& j) { box(j)["profile"] = {{0, 0}, {1, 0}, {1, 0}, {1, 1}}; }, Diag::Degenerate, "objects[1].solids[0].profile"},
     {"profile without area", [](Json& j) { box(j)["profile"] = {{0, 0}, {1, 0}, {2, 0}}; }, Diag::Degenerate, "objects[1].solids[0].profile"},
     {"axis unknown", [](Json& j) { box(j)["axis"] = "w"; }, Diag::UnknownAxis, "objects[1].solids[0].axis"},

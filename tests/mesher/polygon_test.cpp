@@ -30,6 +30,38 @@ TEST(Polygon, ConvexityIgnoresWindingAndCollinearCorners) {
   EXPECT_FALSE(isConvex({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}));  // a notch
 }
 
+// Edges running back along each other turn half a circle at each end of the fold, once as +0 and
+// once as -0 (the fuzzed profile of tests/fuzz/regressions/scene_text/bottom_face_crosses_itself):
+// summed, the two turns cancel and the ring, a triangle with a spike along one side, turned once.
+TEST(Polygon, EdgesFoldingBackAreNotConvex) {
+  const Ring2 spiked{{0, 1}, {0, 0}, {1, 2}, {0, 2}, {0, -1}};
+  EXPECT_FALSE(isConvex(spiked));
+  EXPECT_FALSE(isConvex(Ring2(spiked.rbegin(), spiked.rend())));
+  Ring2 mirrored;
+  for (Vec2 p : spiked) mirrored.push_back({-p.x, p.y});
+  EXPECT_FALSE(isConvex(mirrored));
+  EXPECT_FALSE(isConvex(Ring2(mirrored.rbegin(), mirrored.rend())));
+}
+
+// Rings of 3-8 points on a 4 x 4 grid fold back, cross, touch and repeat points in every way: each
+// one taken as convex must be simple, as the scene loader relies on for a solid's bottom (which
+// is its profile). Points repeating their neighbour are left out: the loader refuses them first.
+TEST(Polygon, EveryRingTakenAsConvexIsSimple) {
+  std::mt19937 random(19);
+  std::uniform_int_distribution<int> grid(0, 3);
+  size_t convex = 0;
+  for (int trial = 0; trial < 50000; ++trial) {
+    Ring2 ring(3 + trial % 6);
+    for (Vec2& p : ring) p = {grid(random), grid(random)};
+    bool repeats = false;
+    for (size_t i = 0; i < ring.size(); ++i) repeats |= ring[i] == ring[(i + 1) % ring.size()];
+    if (repeats || !isConvex(ring)) continue;
+    ASSERT_TRUE(isSimple(ring)) << "trial " << trial;
+    ++convex;
+  }
+  EXPECT_GT(convex, 2000u);  // not only triangles
+}
+
 TEST(Polygon, APentagramTurnsOneWayButIsNotConvex) {
   Ring2 star;
   for (int i = 0; i < 5; ++i) {
