@@ -98,9 +98,14 @@ bool SubdomainRemover::insideSeesRing(const std::vector<Vec2>& points, size_t ri
   const size_t n = ringSize;
   const Vec2* p = points.data();
   insideQuad_.resize(n);
+  insideScore_.resize(n);
   for (size_t i = 0; i < n; ++i) {
     if (!turnsLeft(p[i], p[(i + 1) % n], p[n], rounding_)) return false;
-    insideQuad_[i] = strictlyConvexQuad(p[n], p[i], p[(i + 1) % n], p[(i + 2) % n], rounding_);
+    const auto h = static_cast<uint32_t>(n), a = static_cast<uint32_t>(i), b = static_cast<uint32_t>((i + 1) % n),
+               c = static_cast<uint32_t>((i + 2) % n);
+    insideQuad_[i] = strictlyConvexQuad(p[n], p[a], p[b], p[c], rounding_);
+    insideScore_[i][0] = elementScore({{h, a, b, 0}, 3});
+    insideScore_[i][1] = insideQuad_[i] ? elementScore({{h, a, b, c}, 4}) : 0;
   }
   return true;
 }
@@ -125,16 +130,29 @@ bool SubdomainRemover::trialReachesBound() const {
   return true;
 }
 
+double SubdomainRemover::elementScore(const RingElement& e) const {
+  double worst = std::numeric_limits<double>::infinity();
+  for (uint8_t k = 0; k < e.count; ++k) {
+    const uint32_t at = e.v[k];
+    if (reach_[at] <= 0) continue;
+    const double angle = cornerAngleDeg(shaped_[e.v[(k + e.count - 1) % e.count]], shaped_[at], shaped_[e.v[(k + 1) % e.count]]);
+    worst = std::min(worst, angle / reach_[at]);
+  }
+  return worst;
+}
+
 double SubdomainRemover::score(double cutoff) const {
   double worst = std::numeric_limits<double>::infinity();
-  for (const RingElement& e : trial_)
-    for (uint8_t k = 0; k < e.count; ++k) {
-      const uint32_t at = e.v[k];
-      if (reach_[at] <= 0) continue;
-      const double angle = cornerAngleDeg(shaped_[e.v[(k + e.count - 1) % e.count]], shaped_[at], shaped_[e.v[(k + 1) % e.count]]);
-      worst = std::min(worst, angle / reach_[at]);
-      if (worst <= cutoff) return worst;
-    }
+  for (const RingElement& e : trial_) {
+    worst = std::min(worst, elementScore(e));
+    if (worst <= cutoff) return worst;
+  }
+  return worst;
+}
+
+double SubdomainRemover::insideFanScore() const {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const RingElement& e : trial_) worst = std::min(worst, insideScore_[e.v[1]][e.count == 4 ? 1 : 0]);
   return worst;
 }
 
@@ -176,7 +194,7 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
   double bestScore = -1;
   const size_t fewest = (n - 1) / 2;
   auto done = [&] { return bestScore >= 1 && (firstGood_ || best_.size() <= fewest); };
-  auto consider = [&](bool fanned) {
+  auto consider = [&](bool fanned, bool aroundInner) {
     const size_t count = trial_.size();
     if (!fanned || (bestScore >= 1 && count > best_.size())) return;
     // Only asked whether some set is good: the first one ends the search, no score is needed.
@@ -197,7 +215,7 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
       if (bestScore >= 1) cutoff = count < best_.size() ? belowGood : bestScore;
       else cutoff = std::min(belowGood, count < best_.size() ? bestScore - 0.05 : bestScore + 0.05);
     }
-    const double s = score(cutoff);
+    const double s = aroundInner ? insideFanScore() : score(cutoff);
     bool better = best_.empty();
     if (!better) {
       const bool good = s >= 1, bestGood = bestScore >= 1;
@@ -207,11 +225,11 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
     }
     if (better) best_.swap(trial_), bestScore = s;
   };
-  if (hinges && preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)));
+  if (hinges && preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)), false);
   for (size_t h = 0; hinges && h < n && !done(); ++h)
-    if (static_cast<int>(h) != preferredHinge) consider(fanFromHinge(points_, n, h));
+    if (static_cast<int>(h) != preferredHinge) consider(fanFromHinge(points_, n, h), false);
   if (hasInner && insideSeesRing(points_, n))
-    for (size_t start = 0; start < n && !done(); ++start) fanFromInside(n, start), consider(true);
+    for (size_t start = 0; start < n && !done(); ++start) fanFromInside(n, start), consider(true, true);
   return bestScore;
 }
 

@@ -70,7 +70,7 @@ class SubdomainRemover {
   // to the hinge (a region pinched at its vertex) split the fan.
   bool fanFromHinge(const std::vector<Vec2>& points, size_t ringSize, size_t hinge);
   // Whether the inner point points[ringSize] sees every ring edge, which a fan around it needs
-  // from whichever point it starts; if so, works out insideQuad_ for fanFromInside.
+  // from whichever point it starts; if so, works out insideQuad_ and insideScore_ (shape() first).
   bool insideSeesRing(const std::vector<Vec2>& points, size_t ringSize);
   // Fans the ring around the inner point (insideSeesRing true), starting at ring[start], merged
   // as above, into trial_.
@@ -126,13 +126,20 @@ class SubdomainRemover {
   // How close trial_ comes to the bound: 1 or more when every angle reaches what it can. Stops
   // at the first corner that brings it to `cutoff` or below, returning that (not the score).
   double score(double cutoff) const;
+  // The same for one element of trial_'s kind: its worst corner.
+  double elementScore(const RingElement& e) const;
+  // score() of a fan around the inner point, from insideScore_.
+  double insideFanScore() const;
   // Whether trial_ reaches the bound at every corner (score() >= 1), without angles.
   bool trialReachesBound() const;
 
   std::vector<Vec2> points_, shaped_;
   std::vector<double> reach_, tanReach_;
   std::vector<uint32_t> run_;
-  std::vector<uint8_t> insideQuad_;  // whether the inner point, ring[i], ring[i + 1] and ring[i + 2] make a convex quad
+  // Per ring point i, for fans around the inner point: whether it, ring[i], ring[i + 1] and
+  // ring[i + 2] make a strictly convex quad; the scores of its triangle and quad from ring[i].
+  std::vector<uint8_t> insideQuad_;
+  std::vector<std::array<double, 2>> insideScore_;
   std::vector<int> origin_;
   std::vector<double> feet_;
   std::vector<RingElement> trial_, best_, unused_;
