@@ -53,19 +53,16 @@ bool RingBoundary::onBoundary(const std::vector<Vec2>& ring, size_t i) const {
          ((openSides & 4) && a.y == y0 && b.y == y0) || ((openSides & 8) && a.y == y0 + size && b.y == y0 + size);
 }
 
-void SubdomainRemover::mergeRun(const std::vector<Vec2>& points, uint32_t hinge, size_t length) {
+template <class ConvexAt>
+void SubdomainRemover::mergeRun(uint32_t hinge, size_t length, ConvexAt convexAt) {
   const uint32_t* run = run_.data();
-  const Vec2* p = points.data();
   size_t i = 0;
   while (i + 1 < length) {
     const uint32_t a = run[i], b = run[i + 1];
-    if (i + 2 < length) {
-      const uint32_t c = run[i + 2];
-      if (strictlyConvexQuad(p[hinge], p[a], p[b], p[c], rounding_)) {
-        trial_.push_back({{hinge, a, b, c}, 4});
-        i += 2;
-        continue;
-      }
+    if (i + 2 < length && convexAt(i)) {
+      trial_.push_back({{hinge, a, b, run[i + 2]}, 4});
+      i += 2;
+      continue;
     }
     trial_.push_back({{hinge, a, b, 0}, 3});
     i += 1;
@@ -81,36 +78,45 @@ bool SubdomainRemover::fanFromHinge(const std::vector<Vec2>& points, size_t ring
   trial_.clear();
   run_.resize(n);
   uint32_t* run = run_.data();
+  auto convexAt = [&](size_t i) { return strictlyConvexQuad(p[h], p[run[i]], p[run[i + 1]], p[run[i + 2]], rounding_); };
   size_t length = 0;
   for (size_t k = 1; k < n; ++k) {
     const auto i = static_cast<uint32_t>((hinge + k) % n);
     if (p[i] == p[h]) {  // the region is pinched here: a new run starts
-      mergeRun(points, h, length);
+      mergeRun(h, length, convexAt);
       length = 0;
       continue;
     }
     if (length > 0 && !turnsLeft(p[run[length - 1]], p[i], p[h], rounding_)) return false;
     run[length++] = i;
   }
-  mergeRun(points, h, length);
+  mergeRun(h, length, convexAt);
   return true;
 }
 
-bool SubdomainRemover::fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start) {
+bool SubdomainRemover::insideSeesRing(const std::vector<Vec2>& points, size_t ringSize) {
   const size_t n = ringSize;
   const Vec2* p = points.data();
-  const Vec2 inner = p[n];
+  insideQuad_.resize(n);
+  insideScore_.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    if (!turnsLeft(p[i], p[(i + 1) % n], p[n], rounding_)) return false;
+    const auto h = static_cast<uint32_t>(n), a = static_cast<uint32_t>(i), b = static_cast<uint32_t>((i + 1) % n),
+               c = static_cast<uint32_t>((i + 2) % n);
+    insideQuad_[i] = strictlyConvexQuad(p[n], p[a], p[b], p[c], rounding_);
+    insideScore_[i][0] = elementScore({{h, a, b, 0}, 3});
+    insideScore_[i][1] = insideQuad_[i] ? elementScore({{h, a, b, c}, 4}) : 0;
+  }
+  return true;
+}
+
+void SubdomainRemover::fanFromInside(size_t ringSize, size_t start) {
+  const size_t n = ringSize;
   trial_.clear();
   run_.resize(n + 1);
   uint32_t* run = run_.data();
-  size_t length = 0;
-  for (size_t k = 0; k <= n; ++k) {
-    const auto i = static_cast<uint32_t>((start + k) % n);
-    if (length > 0 && !turnsLeft(p[run[length - 1]], p[i], inner, rounding_)) return false;
-    run[length++] = i;
-  }
-  mergeRun(points, static_cast<uint32_t>(n), length);
-  return true;
+  for (size_t k = 0; k <= n; ++k) run[k] = static_cast<uint32_t>((start + k) % n);
+  mergeRun(static_cast<uint32_t>(n), n + 1, [&](size_t i) { return insideQuad_[run[i]] != 0; });
 }
 
 bool SubdomainRemover::trialReachesBound() const {
@@ -124,15 +130,29 @@ bool SubdomainRemover::trialReachesBound() const {
   return true;
 }
 
-double SubdomainRemover::score() const {
+double SubdomainRemover::elementScore(const RingElement& e) const {
   double worst = std::numeric_limits<double>::infinity();
-  for (const RingElement& e : trial_)
-    for (uint8_t k = 0; k < e.count; ++k) {
-      const uint32_t at = e.v[k];
-      if (reach_[at] <= 0) continue;
-      const double angle = cornerAngleDeg(shaped_[e.v[(k + e.count - 1) % e.count]], shaped_[at], shaped_[e.v[(k + 1) % e.count]]);
-      worst = std::min(worst, angle / reach_[at]);
-    }
+  for (uint8_t k = 0; k < e.count; ++k) {
+    const uint32_t at = e.v[k];
+    if (reach_[at] <= 0) continue;
+    const double angle = cornerAngleDeg(shaped_[e.v[(k + e.count - 1) % e.count]], shaped_[at], shaped_[e.v[(k + 1) % e.count]]);
+    worst = std::min(worst, angle / reach_[at]);
+  }
+  return worst;
+}
+
+double SubdomainRemover::score(double cutoff) const {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const RingElement& e : trial_) {
+    worst = std::min(worst, elementScore(e));
+    if (worst <= cutoff) return worst;
+  }
+  return worst;
+}
+
+double SubdomainRemover::insideFanScore() const {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const RingElement& e : trial_) worst = std::min(worst, insideScore_[e.v[1]][e.count == 4 ? 1 : 0]);
   return worst;
 }
 
@@ -174,7 +194,7 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
   double bestScore = -1;
   const size_t fewest = (n - 1) / 2;
   auto done = [&] { return bestScore >= 1 && (firstGood_ || best_.size() <= fewest); };
-  auto consider = [&](bool fanned) {
+  auto consider = [&](bool fanned, bool aroundInner) {
     const size_t count = trial_.size();
     if (!fanned || (bestScore >= 1 && count > best_.size())) return;
     // Only asked whether some set is good: the first one ends the search, no score is needed.
@@ -187,7 +207,15 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
       best_.swap(trial_), bestScore = 1;
       return;
     }
-    const double s = score();
+    // A trial scoring at most `cutoff` loses to best_ (the rule below), so its scan of the
+    // corners may stop there: the worst found so far already rules it out.
+    double cutoff = -std::numeric_limits<double>::infinity();
+    if (!best_.empty()) {
+      const double belowGood = std::nextafter(1.0, 0.0);
+      if (bestScore >= 1) cutoff = count < best_.size() ? belowGood : bestScore;
+      else cutoff = std::min(belowGood, count < best_.size() ? bestScore - 0.05 : bestScore + 0.05);
+    }
+    const double s = aroundInner ? insideFanScore() : score(cutoff);
     bool better = best_.empty();
     if (!better) {
       const bool good = s >= 1, bestGood = bestScore >= 1;
@@ -197,11 +225,11 @@ double SubdomainRemover::search(size_t n, int preferredHinge, bool hasInner, Vec
     }
     if (better) best_.swap(trial_), bestScore = s;
   };
-  if (hinges && preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)));
+  if (hinges && preferredHinge >= 0) consider(fanFromHinge(points_, n, static_cast<size_t>(preferredHinge)), false);
   for (size_t h = 0; hinges && h < n && !done(); ++h)
-    if (static_cast<int>(h) != preferredHinge) consider(fanFromHinge(points_, n, h));
-  if (hasInner)
-    for (size_t start = 0; start < n && !done(); ++start) consider(fanFromInside(points_, n, start));
+    if (static_cast<int>(h) != preferredHinge) consider(fanFromHinge(points_, n, h), false);
+  if (hasInner && insideSeesRing(points_, n))
+    for (size_t start = 0; start < n && !done(); ++start) fanFromInside(n, start), consider(true, true);
   return bestScore;
 }
 

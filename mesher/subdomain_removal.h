@@ -69,11 +69,17 @@ class SubdomainRemover {
   // point hidden from the hinge, or in line with it and a neighbour: a T-vertex). Points equal
   // to the hinge (a region pinched at its vertex) split the fan.
   bool fanFromHinge(const std::vector<Vec2>& points, size_t ringSize, size_t hinge);
-  // Fans the ring around the inner point points[ringSize], starting at ring[start]; false when
-  // the point does not see some ring edge.
-  bool fanFromInside(const std::vector<Vec2>& points, size_t ringSize, size_t start);
-  // The fan of run_'s first `length` points around points[hinge], merged as above, into trial_.
-  void mergeRun(const std::vector<Vec2>& points, uint32_t hinge, size_t length);
+  // Whether the inner point points[ringSize] sees every ring edge, which a fan around it needs
+  // from whichever point it starts; if so, works out insideQuad_ and insideScore_ (shape() first).
+  bool insideSeesRing(const std::vector<Vec2>& points, size_t ringSize);
+  // Fans the ring around the inner point (insideSeesRing true), starting at ring[start], merged
+  // as above, into trial_.
+  void fanFromInside(size_t ringSize, size_t start);
+  // The fan of run_'s first `length` points around point `hinge`, neighbouring triangles merged
+  // where convexAt(i) says run_[i], run_[i + 1] and run_[i + 2] make a strictly convex
+  // quadrilateral with it, into trial_.
+  template <class ConvexAt>
+  void mergeRun(uint32_t hinge, size_t length, ConvexAt convexAt);
   // The best fan of points_ (the first n a ring, then the inner point when `hasInner`) into
   // best_, from ring points too unless `hinges` is false; returns its score.
   double search(size_t n, int preferredHinge, bool hasInner, Vec2 shapeScale, bool hinges = true);
@@ -117,14 +123,23 @@ class SubdomainRemover {
   // are.
   size_t augment(const std::vector<Vec2>& ring, const RingBoundary& boundary, const Vec2* inner, Vec2 shapeScale,
                  int only);
-  // How close trial_ comes to the bound: 1 or more when every angle reaches what it can.
-  double score() const;
+  // How close trial_ comes to the bound: 1 or more when every angle reaches what it can. Stops
+  // at the first corner that brings it to `cutoff` or below, returning that (not the score).
+  double score(double cutoff) const;
+  // The same for one element of trial_'s kind: its worst corner.
+  double elementScore(const RingElement& e) const;
+  // score() of a fan around the inner point, from insideScore_.
+  double insideFanScore() const;
   // Whether trial_ reaches the bound at every corner (score() >= 1), without angles.
   bool trialReachesBound() const;
 
   std::vector<Vec2> points_, shaped_;
   std::vector<double> reach_, tanReach_;
   std::vector<uint32_t> run_;
+  // Per ring point i, for fans around the inner point: whether it, ring[i], ring[i + 1] and
+  // ring[i + 2] make a strictly convex quad; the scores of its triangle and quad from ring[i].
+  std::vector<uint8_t> insideQuad_;
+  std::vector<std::array<double, 2>> insideScore_;
   std::vector<int> origin_;
   std::vector<double> feet_;
   std::vector<RingElement> trial_, best_, unused_;
