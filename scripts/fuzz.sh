@@ -73,7 +73,9 @@ replay() {
   local target=$1 files
   mapfile -t files < <(find "tests/fuzz/regressions/$target" -type f 2>/dev/null | sort)
   ((${#files[@]})) || return 0
-  if ! "$out/tests/fuzz/fuzz_$target" -timeout=10 -rss_limit_mb=2560 "${files[@]}" >"$out/findings/$target.replay.log" 2>&1; then
+  # 30 s, not the runs' 10: the slowest reproducer (the model check's dome, 65,536 faces) takes
+  # 6-7 s under the sanitizers on a free machine, so a busy one would fail it without a hang.
+  if ! "$out/tests/fuzz/fuzz_$target" -timeout=30 -rss_limit_mb=2560 "${files[@]}" >"$out/findings/$target.replay.log" 2>&1; then
     echo "fuzz: $target: a reproducer of tests/fuzz/regressions/$target fails again: see $out/findings/$target.replay.log"
     return 1
   fi
