@@ -174,7 +174,8 @@ TEST_F(GltfUris, ImagesAreConfinedAsBuffersAre) {
   };
   const std::pair<const char*, Diag> cases[] = {
       {"../secret/secret.bmp", Diag::UriOutsideFolder}, {"/etc/shadow", Diag::UriAbsolute}, {"pipe.bmp", Diag::NotRegularFile}};
-  for (const auto& [uri, diag] : cases) {
+  for (const auto& [uriText, diag] : cases) {
+    const std::string uri = uriText;  // clang 14 lambdas take no structured bindings
     std::string what;
     EXPECT_EQ(refusalOf([&] { loadGltf(modelWithImage(uri)); }, &what), diag) << uri;
     EXPECT_EQ(what.rfind(dir / "model/textured.gltf: images[0].uri: ", 0), 0u) << what;

@@ -96,10 +96,12 @@ Decoded decode(const uint8_t* data, size_t size) {
   return out;
 }
 
-// The mesher's work limit here: a sixteenth of the default (mesher.h), ample for the decoded
-// polygons' at most 16 x 16 patches, so that an input the mesher refuses as too large costs a
-// fraction of a second under the sanitizers rather than seconds, and the run reaches further.
-constexpr size_t kMaxQuadrants = ::mesher::kMaxQuadrants / 16;
+// The mesher's work limit here: 8,192 quadrants, a 512th of the default (mesher.h). The decoded
+// polygons start from at most 16 x 16 patches, and a refinement down to any depth at one place
+// costs a few quadrants a level, so every depth is still reached; what the limit cuts short are
+// meshes of 50,000-200,000 elements (grading around near-touching edges) which took 2-4 s each
+// under the sanitizers and which the run kept seeking out, slowing it to 4-5 inputs a second.
+constexpr size_t kMaxQuadrants = ::mesher::kMaxQuadrants / 512;
 
 // Coordinates that reach the mesher at all: scenes and polygon cases refuse anything else.
 bool finiteAndBounded(const ::mesher::PolygonWithHoles& polygon) {
