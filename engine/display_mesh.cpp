@@ -1,6 +1,7 @@
 #include "engine/display_mesh.h"
 
 #include "engine/surface_mesh.h"
+#include "util/check.h"
 #include "radiosity/ambient.h"
 
 #include <glm/geometric.hpp>
@@ -20,15 +21,28 @@ float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0
 
 }  // namespace
 
-DisplayMesh displayMesh(const MeshedScene& meshed) {
+DisplayMesh displayMesh(const MeshedScene& meshed, std::optional<glm::dvec3> origin) {
   DisplayMesh mesh;
+  if (origin) {
+    mesh.origin = *origin;
+  } else {
+    bool first = true;
+    glm::dvec3 low{0}, high{0};
+    for (const SurfaceMesh& surfaceMesh : meshed.surfaces)
+      for (const Vec3& p : surfaceMesh.positions) {
+        low = first ? p : glm::min(low, p);
+        high = first ? p : glm::max(high, p);
+        first = false;
+      }
+    mesh.origin = 0.5 * (low + high);
+  }
   for (const SurfaceMesh& surfaceMesh : meshed.surfaces) {
     const mesher::Mesh& patches = surfaceMesh.mesh;
     const auto first = static_cast<uint32_t>(mesh.positions.size());
     mesh.surfaceVertexStart.push_back(first);
     mesh.surfaceEdgeStart.push_back(static_cast<uint32_t>(mesh.edges.size()));
     for (const Vec3& p : surfaceMesh.positions) {
-      mesh.positions.emplace_back(p);
+      mesh.positions.emplace_back(p - mesh.origin);
       mesh.radiance.emplace_back(0.0f);
       mesh.area.push_back(0);
     }
@@ -60,6 +74,7 @@ DisplayMesh displayMesh(const MeshedScene& meshed) {
 }
 
 void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh) {
+  DCHECK(old.origin == fresh.origin);
   const size_t surfaces = std::min(old.surfaceVertexStart.size(), fresh.surfaceVertexStart.size()) - 1;
   for (size_t s = 0; s < surfaces; ++s) {
     const uint32_t oldFirst = old.surfaceVertexStart[s], oldEnd = old.surfaceVertexStart[s + 1];
@@ -86,7 +101,8 @@ void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh) {
 void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh) {
   for (uint32_t s : surfaces) {
     const std::vector<Vec3>& positions = meshed.surfaces[s].positions;
-    std::copy(positions.begin(), positions.end(), mesh.positions.begin() + mesh.surfaceVertexStart[s]);
+    std::transform(positions.begin(), positions.end(), mesh.positions.begin() + mesh.surfaceVertexStart[s],
+                   [&](const Vec3& p) { return glm::vec3(p - mesh.origin); });
   }
 }
 

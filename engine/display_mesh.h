@@ -10,12 +10,16 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace engine {
 
 struct DisplayMesh {
-  std::vector<glm::vec3> positions;  // per vertex, world coordinates
+  // Positions are world coordinates less `origin` (the middle of the meshes' bounds): float keeps
+  // a room 900 km from the world's origin to 6 cm, and to a micrometre about its own middle.
+  glm::dvec3 origin{0};
+  std::vector<glm::vec3> positions;  // per vertex, world coordinates less `origin`
   std::vector<glm::vec3> radiance;   // per vertex, linear RGB
   std::vector<float> area;           // per vertex: a third of the area of its triangles
   std::vector<uint32_t> triangles;   // 3 indices per triangle, counter-clockwise from the front
@@ -31,16 +35,17 @@ struct DisplayMesh {
 };
 
 // The display's geometry of meshed surfaces (radiance left 0): quads split into two triangles,
-// each element edge once.
-DisplayMesh displayMesh(const MeshedScene& meshed);
+// each element edge once. Its origin is the middle of the meshes' bounds unless given (a rebuild
+// that carries another mesh's radiance keeps that mesh's origin: carryRadiance).
+DisplayMesh displayMesh(const MeshedScene& meshed, std::optional<glm::dvec3> origin = {});
 
 // Radiance for `fresh`, rebuilt from the same surfaces after some were meshed again, until the
 // solver has lit it: a surface whose vertex count is unchanged keeps its radiance vertex by
 // vertex; a remeshed one gives each vertex the radiance of an old vertex at the same place, or
-// the surface's old mean where there is none.
+// the surface's old mean where there is none. Both meshes have the same origin.
 void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh);
 
-// Copies the world positions of `surfaces` from `meshed` (after they moved; same meshes).
+// Copies the positions of `surfaces` from `meshed` (after they moved; same meshes), less mesh.origin.
 void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh);
 
 // Shades every surface with its emission plus its reflectance times the scene's ambient

@@ -158,7 +158,14 @@ std::string exportGltf(const Scene& scene, const DisplayMesh& mesh, const GltfEx
     }
     if (primitives.empty()) continue;
     doc["meshes"].push_back({{"name", scene.objects[object].name}, {"primitives", primitives}});
-    doc["nodes"].push_back({{"name", scene.objects[object].name}, {"mesh", doc["meshes"].size() - 1}});
+    Json node = {{"name", scene.objects[object].name}, {"mesh", doc["meshes"].size() - 1}};
+    // The positions are about the display mesh's origin, in float; the node puts them in place
+    // in double (a model far from the world's origin keeps its detail).
+    if (mesh.origin != glm::dvec3{0}) {
+      const glm::dvec3 at = mesh.origin * scene.metersPerUnit;
+      node["translation"] = {at.x, at.y, at.z};
+    }
+    doc["nodes"].push_back(std::move(node));
     doc["scenes"][0]["nodes"].push_back(doc["nodes"].size() - 1);
   }
 

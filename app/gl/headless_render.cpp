@@ -16,7 +16,7 @@ HeadlessImages renderHeadless(const engine::Scene& scene, const engine::DisplayM
   SceneRenderer renderer;
   renderer.upload(mesh);
   FrameSettings frame;
-  frame.clipFromWorld = clipFromWorld(camera, static_cast<double>(width) / height, scene);
+  frame.clipFromDisplay = clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
   frame.width = width;
   frame.height = height;
   frame.exposure = exposure;

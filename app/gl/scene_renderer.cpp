@@ -79,7 +79,7 @@ void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput)
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glUseProgram(shading_.id());
-  glUniformMatrix4fv(shading_.uniform("u_clipFromWorld"), 1, GL_FALSE, glm::value_ptr(frame.clipFromWorld));
+  glUniformMatrix4fv(shading_.uniform("u_clipFromDisplay"), 1, GL_FALSE, glm::value_ptr(frame.clipFromDisplay));
   glUniform1f(shading_.uniform("u_exposure"), frame.exposure);
   glUniform1i(shading_.uniform("u_linearOutput"), linearOutput ? 1 : 0);
   glBindVertexArray(vao_);
@@ -101,7 +101,7 @@ void SceneRenderer::draw(const FrameSettings& frame) const {
   drawTriangles(frame, false);
   if ((frame.wireframe || !frame.highlight.empty()) && edgeIndices_ > 0) {
     glUseProgram(wire_.id());
-    glUniformMatrix4fv(wire_.uniform("u_clipFromWorld"), 1, GL_FALSE, glm::value_ptr(frame.clipFromWorld));
+    glUniformMatrix4fv(wire_.uniform("u_clipFromDisplay"), 1, GL_FALSE, glm::value_ptr(frame.clipFromDisplay));
     glDepthFunc(GL_LEQUAL);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edges_);
     if (frame.wireframe) {

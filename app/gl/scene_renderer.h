@@ -15,7 +15,7 @@
 namespace app {
 
 struct FrameSettings {
-  glm::mat4 clipFromWorld{1.0f};
+  glm::mat4 clipFromDisplay{1.0f};  // clip coordinates from the display mesh's (clipFromDisplay)
   int width = 640, height = 480;
   float exposure = 1;
   bool wireframe = false;

@@ -49,14 +49,14 @@ bool chooseCamera(const engine::Scene& scene, const std::string& name, ViewCamer
   return true;
 }
 
-glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, const engine::Scene& scene) {
+glm::mat4 clipFromDisplay(const ViewCamera& camera, double aspect, const engine::Scene& scene, const glm::dvec3& origin) {
   const glm::dvec3 center = 0.5 * (scene.boundsMin + scene.boundsMax);
   const double diagonal = std::max(glm::length(scene.boundsMax - scene.boundsMin), 1e-9);
   const double farPlane = glm::length(camera.position - center) + diagonal;
   const double nearPlane = std::min(diagonal * 5e-4, farPlane * 1e-3);
   const glm::dmat4 viewFromWorld = glm::lookAt(camera.position, camera.position + camera.forward(), camera.up);
   const glm::dmat4 clipFromView = glm::perspective(glm::radians(camera.fovYDeg), aspect, nearPlane, farPlane);
-  return glm::mat4(clipFromView * viewFromWorld);
+  return glm::mat4(clipFromView * glm::translate(viewFromWorld, origin));
 }
 
 glm::dvec3 rayThrough(const ViewCamera& camera, double aspect, glm::dvec2 ndc) {

@@ -32,9 +32,10 @@ ViewCamera overviewCamera(const engine::Scene& scene);
 // one, else the overview. Returns false (and leaves `out` alone) when a named camera is missing.
 bool chooseCamera(const engine::Scene& scene, const std::string& name, ViewCamera& out);
 
-// clip-from-world for an image of `aspect` = width / height, with near and far planes that
-// enclose the scene's bounds.
-glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, const engine::Scene& scene);
+// Clip coordinates from a display mesh's (world less `origin`: engine::DisplayMesh) for an image
+// of `aspect` = width / height, with near and far planes that enclose the scene's bounds. Made in
+// double and only then rounded, so the world's far-off origin never meets float.
+glm::mat4 clipFromDisplay(const ViewCamera& camera, double aspect, const engine::Scene& scene, const glm::dvec3& origin);
 
 // The direction from the eye through the point `ndc` of the image (x right, y up, both -1..1)
 // of an image of `aspect` = width / height: where a click points.

@@ -220,7 +220,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       renderer.updatePositions(mesh.positions);
       return;
     }
-    engine::DisplayMesh fresh = engine::displayMesh(edits.editor().meshed());
+    engine::DisplayMesh fresh = engine::displayMesh(edits.editor().meshed(), mesh.origin);
     engine::carryRadiance(mesh, fresh);
     mesh = std::move(fresh);
     renderer.upload(mesh);
@@ -339,7 +339,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     glfwGetFramebufferSize(window, &width, &height);
     if (width > 0 && height > 0) {
       FrameSettings settings;
-      settings.clipFromWorld = clipFromWorld(camera, static_cast<double>(width) / height, scene);
+      settings.clipFromDisplay = clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
       settings.width = width;
       settings.height = height;
       settings.exposure = panel.exposure;

@@ -6,6 +6,10 @@
 #include "tests/app/pixel_probe.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <fstream>
 
 namespace app {
 namespace {
@@ -71,6 +75,47 @@ TEST(HeadlessRender, WireframeDrawsWhiteEdges) {
 TEST(HeadlessRender, SameSceneSamePixels) {
   const engine::Scene scene = loadAsset("office.json");
   EXPECT_EQ(render(scene, 160, 120).color.pixels, render(scene, 160, 120).color.pixels);
+}
+
+// tests/cli/far_room_box.json is a room 900 km from the world's origin (within the format's 1e6
+// limit), where float world coordinates are 6 cm apart. It draws as its copy moved to the origin
+// does (the display's float coordinates are about the mesh's middle): on 160 x 120 pixels, a
+// mean difference under one level and under 1% of pixels more than 8 levels apart (edges that
+// fall on the other side of a pixel centre). Drawn in float world coordinates the walls cracked
+// open and the box lost its shape.
+TEST(HeadlessRender, ARoomFarFromTheOriginDrawsAsItsCopyAtTheOrigin) {
+  const std::string farPath = std::string(WALKRAD_SOURCE) + "/tests/cli/far_room_box.json";
+  nlohmann::json json = nlohmann::json::parse(std::ifstream(farPath));
+  const auto shift = [](nlohmann::json& pair) {
+    for (int k : {0, 1}) pair[k] = pair[k].get<double>() - 900000;
+  };
+  nlohmann::json& room = json["objects"][0]["solids"][0];
+  for (nlohmann::json& p : room["profile"]) shift(p);
+  for (nlohmann::json& p : room["faces"]["top"]["holes"][0]["polygon"]) shift(p);
+  for (const char* key : {"position", "look_at"}) json["cameras"]["default"][key][0] = json["cameras"]["default"][key][0].get<double>() - 900000;
+  for (const char* key : {"position", "look_at"}) json["cameras"]["default"][key][2] = json["cameras"]["default"][key][2].get<double>() - 900000;
+  nlohmann::json& box = json["objects"][1]["position"];
+  box[0] = box[0].get<double>() - 900000;
+  box[2] = box[2].get<double>() - 900000;
+  const std::string nearPath = std::string(WALKRAD_TEST_OUTPUT) + "/near_room_box.json";
+  std::ofstream(nearPath) << json.dump();
+
+  const ImageRgb8 far = render(engine::loadScene(farPath), 160, 120).color;
+  const ImageRgb8 near = render(engine::loadScene(nearPath), 160, 120).color;
+  ASSERT_EQ(far.pixels.size(), near.pixels.size());
+  double sum = 0;
+  size_t apart = 0;
+  for (size_t i = 0; i < far.pixels.size(); i += 3) {
+    int most = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      const int d = std::abs(int{far.pixels[i + c]} - int{near.pixels[i + c]});
+      sum += d;
+      most = std::max(most, d);
+    }
+    apart += most > 8;
+  }
+  EXPECT_LT(sum / static_cast<double>(far.pixels.size()), 1.0);
+  EXPECT_LT(static_cast<double>(apart), 0.01 * static_cast<double>(far.pixels.size() / 3));
 }
 
 }  // namespace

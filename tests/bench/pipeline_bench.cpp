@@ -66,7 +66,7 @@ void headlessFrame(benchmark::State& state) {
   app::ViewCamera camera;
   app::chooseCamera(scene, "", camera);
   app::FrameSettings frame;
-  frame.clipFromWorld = app::clipFromWorld(camera, static_cast<double>(width) / height, scene);
+  frame.clipFromDisplay = app::clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
   frame.width = width;
   frame.height = height;
   frame.exposure = static_cast<float>(engine::autoExposure(mesh));

@@ -24,11 +24,11 @@ TEST(DisplayMesh, TrianglesTileEverySurface) {
       uint32_t v = mesh.surfaceVertexStart[i];
       for (uint32_t k = v; k < mesh.surfaceVertexStart[i + 1]; ++k) {
         surfaceOf[k] = i;
-        EXPECT_NEAR(glm::dot(glm::dvec3(mesh.positions[k]), s.normal), s.planeOffset(), 1e-4 * (1 + std::abs(s.planeOffset())));
+        EXPECT_NEAR(glm::dot(mesh.origin + glm::dvec3(mesh.positions[k]), s.normal), s.planeOffset(), 1e-4 * (1 + std::abs(s.planeOffset())));
       }
-      for (const Vec3& p : s.outer) EXPECT_EQ(mesh.positions[v++], glm::vec3(p));
+      for (const Vec3& p : s.outer) EXPECT_EQ(mesh.positions[v++], glm::vec3(p - mesh.origin));
       for (const Ring3& h : s.holes)
-        for (const Vec3& p : h) EXPECT_EQ(mesh.positions[v++], glm::vec3(p));
+        for (const Vec3& p : h) EXPECT_EQ(mesh.positions[v++], glm::vec3(p - mesh.origin));
     }
     for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
       const glm::dvec3 a{mesh.positions[mesh.triangles[t]]}, b{mesh.positions[mesh.triangles[t + 1]]},
@@ -84,6 +84,25 @@ TEST(DisplayMesh, QuadsAreTwoTrianglesAndEachEdgeIsDrawnOnce) {
   EXPECT_EQ(mesh.quads, 6u * 4);
   EXPECT_EQ(mesh.triangleCount(), 6u * 8);
   EXPECT_EQ(mesh.edges.size(), 2u * 6 * 12);
+}
+
+// The display's float positions are about the meshes' middle, so a room 900 km out keeps its
+// detail: every vertex within the room's size of the origin, and back in the world to 1e-6.
+TEST(DisplayMesh, PositionsAreAboutTheMiddleOfTheMeshes) {
+  const Scene scene = loadScene(std::string(WALKRAD_SOURCE) + "/tests/cli/far_room_box.json");
+  const MeshedScene meshed = meshScene(scene);
+  const DisplayMesh mesh = displayMesh(meshed);
+  EXPECT_NEAR(mesh.origin.x, 900000.5, 1e-9);
+  EXPECT_NEAR(mesh.origin.z, 900000.5, 1e-9);
+  size_t v = 0;
+  for (const SurfaceMesh& s : meshed.surfaces)
+    for (const Vec3& p : s.positions) {
+      EXPECT_LE(glm::length(glm::dvec3(mesh.positions[v])), 1.0);
+      EXPECT_LT(glm::length(mesh.origin + glm::dvec3(mesh.positions[v++]) - p), 1e-6);
+    }
+  EXPECT_EQ(v, mesh.positions.size());
+  // A rebuild may keep an origin given, for carryRadiance.
+  EXPECT_EQ(displayMesh(meshed, glm::dvec3{1, 2, 3}).positions[0], glm::vec3(meshed.surfaces[0].positions[0] - glm::dvec3{1, 2, 3}));
 }
 
 TEST(DisplayMesh, AutoExposureMapsTheLogAverageToTheKey) {
