@@ -51,7 +51,7 @@ void editSection(const engine::Scene& scene, PanelState& state) {
     ImGui::TextDisabled("click an object to select it");
   } else {
     ImGui::Text("selected: %s%s", state.selected.c_str(), state.selectedMovable ? "" : " (fixed)");
-    ImGui::Text("at (%.3g, %.3g, %.3g) %s, turned %.3g deg", state.selectedPosition.x, state.selectedPosition.y,
+    ImGui::Text("at (%.3f, %.3f, %.3f) %s, turned %.3g deg", state.selectedPosition.x, state.selectedPosition.y,
                 state.selectedPosition.z, scene.units.c_str(), state.selectedTurn);
   }
   ImGui::TextDisabled("left drag: move on its resting plane; wheel while dragging: height");

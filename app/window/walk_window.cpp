@@ -89,7 +89,11 @@ std::string screenshotName(const engine::Scene& scene) {
   char stamp[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-  return "walkrad-" + std::filesystem::path(scene.file).stem().string() + "-" + stamp + ".png";
+  const std::string stem = "walkrad-" + std::filesystem::path(scene.file).stem().string() + "-" + stamp;
+  // Two in one second must not overwrite the first.
+  std::string name = stem + ".png";
+  for (int n = 2; std::filesystem::exists(name); ++n) name = stem + "-" + std::to_string(n) + ".png";
+  return name;
 }
 
 bool controlHeld(GLFWwindow* window) {
@@ -420,8 +424,10 @@ int runView(const ViewOptions& options) {
   glfwSetScrollCallback(window, onScroll);  // before ImGui installs and chains its callbacks
   glfwSetKeyCallback(window, onKey);
   glfwSetDropCallback(window, onDrop);
-  // A key pressed and released between two frames still reads as pressed once (F12, taps).
+  // A key or button pressed and released between two frames still reads as pressed once (F12,
+  // taps; a click that a slow frame would otherwise miss: the button is polled).
   glfwSetInputMode(window, GLFW_STICKY_KEYS, GLFW_TRUE);
+  glfwSetInputMode(window, GLFW_STICKY_MOUSE_BUTTONS, GLFW_TRUE);
 
   int exitCode = 0, frame = 0;
   {
