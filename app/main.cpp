@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   addNumberOption(*viewCommand, "--frames", view.frames, app::inRange(0, 1e9), "close after this many frames");
   viewCommand->add_option("--screenshot", view.screenshot, "with --frames: save the last frame as PNG");
   viewCommand->add_flag("--wireframe", view.wireframe, "start with the mesh edges drawn");
+  viewCommand->add_option("--stats", view.stats, "at the end, write frame times (median, 95th percentile) and peak memory as JSON");
   addNumberOption(*viewCommand, "--threads", view.lighting.solver.graphicsProcessors, kThreads,
                   "graphics-processor threads of the emulated Pixel-Planes 5 (default 1)");
   addAdaptOptions(*viewCommand, view.adapt);

@@ -1,6 +1,7 @@
 #include "app/cli/mesh_command.h"
 
 #include "app/cli/import_stats.h"
+#include "app/cli/peak_memory.h"
 #include "app/image/atomic_file.h"
 #include "engine/gltf_loader.h"
 #include "engine/meshed_scene.h"
@@ -121,7 +122,7 @@ int runMesh(const MeshOptions& options) {
         {"triangles", tally.elements - tally.quads}, {"vertices", tally.vertices},
         {"t_vertices", tally.tVertices}, {"min_angle_deg", tally.smallestAngle},
         {"min_aspect_ratio", tally.smallestAspect}, {"below_angle_bound", tally.belowAngleBound},
-        {"mesh_ms", meshMs}, {"repeats", repeats},
+        {"mesh_ms", meshMs}, {"repeats", repeats}, {"peak_rss_mb", peakResidentMegabytes()},
     };
     if (!imported.is_null()) stats["import"] = imported;
     writeFileAtomically(options.stats, stats.dump(2) + "\n");

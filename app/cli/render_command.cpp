@@ -2,6 +2,7 @@
 
 #include "app/gl/headless_render.h"
 #include "app/cli/import_stats.h"
+#include "app/cli/peak_memory.h"
 #include "app/image/atomic_file.h"
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
@@ -193,6 +194,7 @@ int runRender(const RenderOptions& options) {
         {"surfaces", scene.surfaces.size()},
         {"objects", scene.objects.size()},
         {"exposure", exposure},
+        {"peak_rss_mb", peakResidentMegabytes()},
     };
     if (!moves.empty()) stats["moves"] = moveStats;
     if (adaptation) stats["adaptive_passes"] = adaptation->passes();

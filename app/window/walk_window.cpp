@@ -7,9 +7,12 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "app/cli/peak_memory.h"
 #include "app/gl/scene_renderer.h"
+#include "app/image/atomic_file.h"
 #include "app/image/image.h"
 #include "app/view/view_camera.h"
+#include "app/window/frame_times.h"
 #include "app/window/scene_edits.h"
 #include "app/window/scene_panel.h"
 #include "app/window/walk_controls.h"
@@ -19,6 +22,8 @@
 #include "engine/meshed_scene.h"
 #include "engine/gltf_loader.h"
 #include "engine/scene_loader.h"
+
+#include <nlohmann/json.hpp>
 
 #include <ctime>
 #include <filesystem>
@@ -185,12 +190,36 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
   for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
 }
 
+// What `view --stats` reports: the frames' times, and the last scene's display and light.
+struct ViewRecord {
+  FrameTimes frames;
+  size_t elements = 0, vertices = 0;
+  uint64_t shots = 0;
+  double unshotFraction = 1;
+};
+
+void writeViewStats(const std::string& path, const ViewRecord& record) {
+  const nlohmann::ordered_json stats = {
+      {"frames", record.frames.count()},
+      {"frame_ms_median", record.frames.quantile(0.5)},
+      {"frame_ms_p95", record.frames.quantile(0.95)},
+      {"frame_ms_max", record.frames.quantile(1)},
+      {"elements", record.elements},
+      {"vertices", record.vertices},
+      {"shots", record.shots},
+      {"unshot_fraction", record.unshotFraction},
+      {"peak_rss_mb", peakResidentMegabytes()},
+  };
+  writeFileAtomically(path, stats.dump(2) + "\n");
+}
+
 // Walks through one scene until the window closes, the frame count runs out (nothing returned)
 // or a file dropped onto the window opens (returned: the window goes on with it). A dropped file
 // that does not open leaves the scene as it is and says why in the panel. `frame` counts the
-// window's frames across the scenes it shows, so --frames bounds the whole run.
+// window's frames across the scenes it shows, so --frames bounds the whole run; `record` takes
+// each frame's time, from the top of its loop to the swap.
 std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& options, OpenedScene opened, ViewCamera camera,
-                                     int& frame, int& exitCode) {
+                                     int& frame, int& exitCode, ViewRecord& record) {
   SceneEdits edits(opened.path, std::move(opened.text), std::move(opened.scene));
   const engine::Scene& scene = edits.editor().scene();  // follows the edits
   engine::DisplayMesh mesh = engine::displayMesh(edits.editor().meshed());
@@ -251,6 +280,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
   bool looking = false, leftWasDown = false;
   double lastTime = glfwGetTime();
   for (++frame; !glfwWindowShouldClose(window); ++frame) {
+    const double frameStart = glfwGetTime();
     g_presses.clear();
     glfwPollEvents();
     const double now = glfwGetTime();
@@ -384,6 +414,11 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       }
     }
     glfwSwapBuffers(window);
+    record.frames.add(1000 * (glfwGetTime() - frameStart));
+    record.elements = mesh.elements;
+    record.vertices = mesh.positions.size();
+    record.shots = shown->shots;
+    record.unshotFraction = shown->unshotFraction;
     if (options.frames > 0 && frame >= options.frames) break;
   }
   return std::nullopt;
@@ -393,6 +428,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
 
 int runView(const ViewOptions& options) {
   OpenedScene opened = openScene(options.scene, options.load, options.patchSize);
+  if (!options.stats.empty()) checkCanWrite(options.stats);
   ViewCamera camera;
   if (!chooseCamera(opened.scene, options.camera, camera)) {
     std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
@@ -430,15 +466,24 @@ int runView(const ViewOptions& options) {
   glfwSetInputMode(window, GLFW_STICKY_MOUSE_BUTTONS, GLFW_TRUE);
 
   int exitCode = 0, frame = 0;
+  ViewRecord record;
   {
     const ImGuiSession imgui(window);
-    for (auto next = walkScene(window, options, std::move(opened), camera, frame, exitCode); next;
-         next = walkScene(window, options, std::move(*next), camera, frame, exitCode)) {
+    for (auto next = walkScene(window, options, std::move(opened), camera, frame, exitCode, record); next;
+         next = walkScene(window, options, std::move(*next), camera, frame, exitCode, record)) {
       chooseCamera(next->scene, "", camera);
       glfwSetWindowTitle(window, ("walkrad - " + std::filesystem::path(next->path).filename().string()).c_str());
     }
   }
   glfwDestroyWindow(window);
+  if (!options.stats.empty()) {
+    try {
+      writeViewStats(options.stats, record);
+    } catch (const std::exception& e) {
+      std::cerr << "walkrad view: " << e.what() << "\n";
+      return 1;
+    }
+  }
   return exitCode;
 }
 

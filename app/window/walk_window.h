@@ -19,6 +19,7 @@ struct ViewOptions {
   int frames = 0;          // > 0: close after this many frames (scripts, tests)
   std::string screenshot;  // with `frames`: save the last frame here
   bool wireframe = false;  // start with the mesh edges drawn
+  std::string stats;       // when not empty: frame times and memory written here as JSON at the end
   engine::LightingSettings lighting;  // the solver thread's (its `adaptive` from `adapt` and the scene)
   AdaptOptions adapt;                 // adaptive refinement while solving
 };

@@ -4,8 +4,10 @@
 #include "tests/app/pixel_probe.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <fstream>
 
 namespace app {
 namespace {
@@ -30,6 +32,22 @@ TEST(WindowScreenshot, ShowsTheCornellBoxAndThePanel) {
       if (p[0] + p[1] + p[2] > 400) ++bright;
     }
   EXPECT_GT(bright, total / 100) << "no panel text";
+}
+
+// `view --stats` of the same run: its five frames, their times in order, the display and memory.
+TEST(WindowScreenshot, StatsCountTheFramesAndTheMemory) {
+  const char* path = std::getenv("WALKRAD_WINDOW_STATS");
+  ASSERT_NE(path, nullptr);
+  const nlohmann::json stats = nlohmann::json::parse(std::ifstream(path));
+  EXPECT_EQ(stats.at("frames"), 5);
+  const double median = stats.at("frame_ms_median"), p95 = stats.at("frame_ms_p95"), most = stats.at("frame_ms_max");
+  EXPECT_GT(median, 0);
+  EXPECT_LE(median, p95);
+  EXPECT_LE(p95, most);
+  EXPECT_GT(stats.at("elements").get<double>(), 100);  // the Cornell box meshed at its patch size
+  EXPECT_GT(stats.at("vertices").get<double>(), stats.at("elements").get<double>());
+  EXPECT_GT(stats.at("peak_rss_mb").get<double>(), 10);
+  EXPECT_LT(stats.at("peak_rss_mb").get<double>(), 4096);
 }
 
 }  // namespace
