@@ -372,7 +372,9 @@ double SubdomainRemover::fanSide(const std::vector<Vec2>& side, Vec2 shapeScale,
     for (double height : {0.5, std::numbers::sqrt3 / 2}) candidates_.push_back((a + 0.5 * d + height * inward) / shapeScale);
   }
   for (const Vec2& at : candidates_) {
+    if (cutAttemptsLeft_ == 0) break;
     if (!containsPoint(side, at)) continue;
+    --cutAttemptsLeft_;
     const double s = attempt(side, -1, &at, shapeScale, nullptr, true);
     const bool better = s >= 1 ? into.score < 1 || best_.size() < into.elements.size() : s > into.score;
     if (better) save(into, s);
@@ -384,6 +386,7 @@ void SubdomainRemover::cutAndFan(const std::vector<Vec2>& ring, Vec2 shapeScale)
   const size_t n = ring.size();
   save(stage_, score_);
   cut_.score = -1;
+  cutAttemptsLeft_ = kCutAndFanAttempts;
   // Fans the sides, the first from ring point i to j, the second (when `cut`) from j round to i,
   // and keeps them in cut_ when both reach the bound with fewer elements than any before.
   auto consider = [&](size_t i, size_t j, bool cut) {
@@ -424,8 +427,8 @@ void SubdomainRemover::cutAndFan(const std::vector<Vec2>& ring, Vec2 shapeScale)
   auto angle = [&](size_t prev, size_t at, size_t next) {
     return cornerAngleDeg(ring[prev] * shapeScale, ring[at] * shapeScale, ring[next] * shapeScale);
   };
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 2; j < n; ++j) {
+  for (size_t i = 0; i < n && cutAttemptsLeft_ > 0; ++i)
+    for (size_t j = i + 2; j < n && cutAttemptsLeft_ > 0; ++j) {
       if ((i == 0 && j == n - 1) || !isDiagonal(ring, i, j)) continue;
       // A cut must not make a corner sharper than the bound.
       if (std::min({angle(j, i, i + 1), angle(j - 1, j, i), angle(i, j, (j + 1) % n), angle((i + n - 1) % n, i, j)}) >=
