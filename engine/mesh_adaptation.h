@@ -51,21 +51,24 @@ class MeshAdaptation {
   bool adaptIfDue(radiosity::Solver& solver, double converge);
 
   // The scene was edited (objects moved): surfaces whose geometry changed take `meshed`'s mesh
-  // and lose their refinement, the others keep theirs. The solver is then to take input()
-  // (engine::applyEdit). Passes are due again as the light after the edit settles.
+  // and lose their refinement, the others keep theirs. A surface moved along keeps its mesh in
+  // the plane coordinates it was meshed in, and refines on from there. The solver is then to
+  // take input() (engine::applyEdit). Passes are due again as the light after the edit settles.
   void edit(const Scene& scene, const MeshedScene& meshed);
 
   uint64_t passes() const { return passes_; }  // passes that changed a mesh
 
  private:
-  // The surface's adaptive mesh, made when it is first refined; null when the mesher refuses
-  // the surface where it stands (it is then not refined, and tried again at the next pass).
+  // The surface's adaptive mesh, made when it is first refined from SurfaceMesh::polygon: the
+  // mesh the surface has, element for element, whose handles are its keys. Null (and the surface
+  // not refined until it is edited) where no adaptive mesh is that mesh (adaptiveMeshOf).
   mesher::AdaptiveMesh* adaptiveMesh(size_t surface);
 
   Scene scene_;
   MeshedScene meshed_;
   radiosity::RefinementSettings settings_;
   std::vector<std::unique_ptr<mesher::AdaptiveMesh>> adaptive_;  // per surface, made when first refined
+  std::vector<uint8_t> unadaptable_;  // per surface: no adaptive mesh reproduces its mesh
   std::vector<radiosity::Surface> input_;
   double nextPassAt_ = kPassFall;
   int convergedPasses_ = 0;

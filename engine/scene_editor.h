@@ -62,6 +62,7 @@ class SceneEditor {
   // objects' poses.
   std::vector<Surface> homeSurfaces_;
   std::vector<std::vector<Vec3>> homePositions_;
+  std::vector<PlaneFrame> homeFrames_;
   std::vector<uint8_t> homeMesh_;  // per surface: its mesh is still the loaded one (moved rigidly)
   std::vector<ObjectPose> homePoses_;
   double contactTolerance_ = 0;
