@@ -8,10 +8,6 @@ namespace engine {
 
 namespace {
 
-bool sameGeometry(const Surface& a, const Surface& b) {
-  return a.outer == b.outer && a.holes == b.holes && a.normal == b.normal && a.patchSize == b.patchSize;
-}
-
 // An adaptive mesh of `surfaceMesh`'s polygon when it is that mesh, element for element under the
 // same keys; else null: a triangle that is its own element (meshSurface), which the quadtree
 // cuts up, or refuses where it is finer than the tree resolves.
@@ -49,6 +45,7 @@ size_t MeshAdaptation::pass(radiosity::Solver& solver) {
   const glm::dvec3 ambient = solver.ambient();
   const double floor = radiosity::kLuminanceFloorShare * radiosity::meanLuminance(input_, solver, ambient);
   size_t changed = 0;
+  std::vector<radiosity::SurfaceChange> changes;
   std::vector<glm::dvec3> lit;
   for (size_t s = 0; s < input_.size(); ++s) {
     // Judged as the display shows it: with the ambient term, so that early on a region not yet
@@ -83,9 +80,10 @@ size_t MeshAdaptation::pass(radiosity::Solver& solver) {
     surfaceMesh.keys = elementKeys(mesh.elements());
     addWorldPositions(scene_.surfaces[s], surfaceMesh);  // the vertices it had keep theirs
     input_[s] = radiosityInput(scene_, meshed_, s);
+    changes.push_back({static_cast<uint32_t>(s), input_[s]});
   }
-  if (changed > 0) {
-    solver.edit(input_);
+  if (!changes.empty()) {
+    solver.edit(changes);
     ++passes_;
   }
   return changed;
@@ -109,18 +107,21 @@ bool MeshAdaptation::adaptIfDue(radiosity::Solver& solver, double converge) {
   return changed;
 }
 
-void MeshAdaptation::edit(const Scene& scene, const MeshedScene& meshed) {
-  for (size_t s = 0; s < scene.surfaces.size(); ++s) {
-    if (sameGeometry(scene.surfaces[s], scene_.surfaces[s])) continue;
-    adaptive_[s].reset();
-    unadaptable_[s] = 0;
-    meshed_.surfaces[s] = meshed.surfaces[s];
-    input_[s] = radiosityInput(scene, meshed_, s);
-  }
+std::vector<radiosity::SurfaceChange> MeshAdaptation::edit(const Scene& scene, const MeshedScene& meshed,
+                                                           std::span<const EditedSurface> edited) {
   scene_ = scene;
+  std::vector<radiosity::SurfaceChange> changes;
+  for (const EditedSurface& e : edited) {
+    adaptive_[e.surface].reset();
+    unadaptable_[e.surface] = 0;
+    meshed_.surfaces[e.surface] = meshed.surfaces[e.surface];
+    input_[e.surface] = radiosityInput(scene_, meshed_, e.surface);
+    changes.push_back({e.surface, input_[e.surface], e.meshedAnew});
+  }
   // Passes are due again as the light after the edit settles (see adaptIfDue).
   nextPassAt_ = -1;
   convergedPasses_ = 0;
+  return changes;
 }
 
 }  // namespace engine

@@ -104,10 +104,13 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   o.position = pose.position;
   o.rotateYDeg = pose.rotateYDeg;
   for (size_t k = 0; k < placed.size(); ++k) uncut_[surfacesOf_[object][k]] = std::move(placed[k]);
+  std::vector<EditedSurface> edited;
   for (size_t k = 0, m = 0; k < changed.size(); ++k) {
     const uint32_t s = changed[k];
     scene_.surfaces[s] = std::move(cut[s]);
-    if (m < remeshed.size() && remeshed[m] == s) {
+    const bool anew = m < remeshed.size() && remeshed[m] == s;
+    edited.push_back({s, anew});
+    if (anew) {
       meshed_.surfaces[s] = std::move(meshes[m++]);
       homeMesh_[s] = 0;
     } else {
@@ -119,6 +122,7 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
     }
   }
   remeshed_ = std::move(remeshed);
+  addEdits(edited_, edited);
   scene_.computeBounds();
   return true;
 }

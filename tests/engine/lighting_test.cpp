@@ -115,7 +115,7 @@ TEST(Lighting, MovesSentWhileShootingAreAllTakenIn) {
       lighting.setPaused(false);
     }
     editor.setPose(block, {home.position + offset, home.rotateYDeg});
-    lighting.edit(editor.scene(), editor.meshed());
+    lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
     ++sent;
   }
   const auto done = waitFor(lighting, [&](const LightingSnapshot& s) { return s.edits == sent && s.converged; });
@@ -164,7 +164,7 @@ TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
   ObjectPose pose = poseOf(editor.scene().objects[box]);
   pose.position.x += 0.5;
   editor.setPose(box, pose);
-  lighting.edit(editor.scene(), editor.meshed());
+  lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
   const auto moved = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && s.converged; });
   ASSERT_NE(moved->meshed, nullptr);
   EXPECT_EQ(moved->radiance.size(), displayMesh(*moved->meshed).positions.size());
@@ -209,7 +209,7 @@ TEST(Lighting, AdaptivePassesRefineAMovedSurfaceTheMesherWouldRefuseWhereItNowSt
   ASSERT_LT(top, editor.scene().surfaces.size());
   EXPECT_THROW(meshSurface(editor.scene().surfaces[top]), mesher::MeshRefused);  // the premise: refused where it stands
 
-  lighting.edit(editor.scene(), editor.meshed());
+  lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && (s.converged || !s.error.empty()); });
   EXPECT_EQ(done->error, "");
   EXPECT_TRUE(done->converged);

@@ -134,8 +134,7 @@ TEST(MeshAdaptation, CoarsensWhereTheShadowWent) {
   ObjectPose pose = poseOf(editor.scene().objects[box]);
   pose.position.x -= 1.5;
   editor.setPose(box, pose);
-  adaptation.edit(editor.scene(), editor.meshed());
-  applyEdit(solver, adaptation.input(), kSettings);
+  applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited(), &adaptation);
   solveTo(*solver, kConverge, UINT64_MAX, {}, &adaptation);
   const ElementSizes after = floorSizes(editor.scene(), adaptation.meshed(), 1.6, 2.4);
   const ElementSizes moved = floorSizes(editor.scene(), adaptation.meshed(), 0.1, 0.9);
@@ -162,7 +161,8 @@ TEST(MeshAdaptation, CoarsensWhereTheShadowWent) {
 
 // The hovering box turned and moved: its surfaces keep the plane coordinates they were meshed in
 // (only their frame moves), so their adaptive meshes are their meshes again, refining goes on in
-// them, and the vertices they had stay where the move put them.
+// them, and the vertices they had stay where the move put them. A pass hands the solver only the
+// surfaces it changed.
 TEST(MeshAdaptation, AMovedSurfaceIsRefinedInThePlaneCoordinatesItWasMeshedIn) {
   SceneEditor editor(shadowScene(), meshScene(shadowScene()));
   const MeshedScene loaded = editor.meshed();
@@ -176,8 +176,9 @@ TEST(MeshAdaptation, AMovedSurfaceIsRefinedInThePlaneCoordinatesItWasMeshedIn) {
   pose.rotateYDeg += 30;
   ASSERT_TRUE(editor.setPose(box, pose));
   ASSERT_TRUE(editor.remeshed().empty());  // it touches nothing
-  adaptation.edit(editor.scene(), editor.meshed());
-  applyEdit(solver, adaptation.input(), kSettings);
+  const std::vector<radiosity::SurfaceChange> changes =
+      applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited(), &adaptation);
+  ASSERT_EQ(changes.size(), editor.surfacesOf(box).size());
   for (uint32_t s : editor.surfacesOf(box)) {
     const SurfaceMesh& mesh = adaptation.meshed().surfaces[s];
     EXPECT_EQ(mesh.polygon.outer, loaded.surfaces[s].polygon.outer);
@@ -185,19 +186,25 @@ TEST(MeshAdaptation, AMovedSurfaceIsRefinedInThePlaneCoordinatesItWasMeshedIn) {
     EXPECT_EQ(mesh.positions, editor.meshed().surfaces[s].positions);
   }
 
-  // Passes until one refines a surface of the box.
+  // Passes until one refines a surface of the box, each handing the solver what it changed.
   size_t refined = 0;
   for (int tries = 0; tries < 50 && refined == 0; ++tries) {
     solver->solve(0, 10);
     const MeshedScene before = adaptation.meshed();
+    const uint64_t edited = solver->stats().editedSurfaces;
     if (adaptation.pass(*solver) == 0) continue;
-    for (uint32_t s : editor.surfacesOf(box)) {
+    size_t changed = 0;
+    for (size_t s = 0; s < before.surfaces.size(); ++s) {
       const SurfaceMesh &was = before.surfaces[s], &is = adaptation.meshed().surfaces[s];
       if (is.keys == was.keys) continue;
+      ++changed;
+      if (editor.scene().surfaces[s].object != box) continue;
       ++refined;
       EXPECT_EQ(std::vector<Vec3>(is.positions.begin(), is.positions.begin() + was.positions.size()), was.positions);
       for (const Vec3& p : is.positions) EXPECT_NEAR(glm::dot(p, editor.scene().surfaces[s].normal), editor.scene().surfaces[s].planeOffset(), 1e-9);
     }
+    EXPECT_EQ(solver->stats().editedSurfaces - edited, changed);
+    EXPECT_LT(changed, before.surfaces.size());
   }
   EXPECT_GT(refined, 0u);
 }
