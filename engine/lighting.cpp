@@ -3,6 +3,7 @@
 #include <glm/common.hpp>
 
 #include <chrono>
+#include <utility>
 
 namespace engine {
 
@@ -28,10 +29,12 @@ uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
   return shots;
 }
 
-void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<radiosity::Surface>& surfaces,
-               const radiosity::SolverSettings& settings) {
-  if (!solver) solver = std::make_unique<radiosity::Solver>(surfaces, settings);
-  else solver->edit(surfaces);
+std::vector<radiosity::SurfaceChange> applyEdit(radiosity::Solver& solver, const Scene& scene, const MeshedScene& meshed,
+                                                std::span<const EditedSurface> edited, MeshAdaptation* adaptation) {
+  std::vector<radiosity::SurfaceChange> changes =
+      adaptation ? adaptation->edit(scene, meshed, edited) : radiosityChanges(scene, meshed, edited);
+  solver.edit(changes);
+  return changes;
 }
 
 LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings)
@@ -82,26 +85,22 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
       if (stop_) return;
       if (!ready()) continue;  // woken to show a pause
       if (restart_ || editsApplied_ < editsRequested_) {
-        const bool edited = editsApplied_ < editsRequested_;
         restart_ = false;
-        std::unique_ptr<std::pair<Scene, MeshedScene>> editedScene;
-        if (edited) {
-          surfaces_ = std::move(edited_);
-          edited_.clear();
-          editedScene = std::move(editedScene_);
-          editsApplied_ = editsRequested_;
-        }
+        std::unique_ptr<std::pair<Scene, MeshedScene>> editedScene = std::move(editedScene_);
+        const std::vector<EditedSurface> edited = std::exchange(edited_, {});
+        editsApplied_ = editsRequested_;
         lock.unlock();
         try {
           if (editedScene) {
-            adaptation_->edit(editedScene->first, editedScene->second);
-            surfaces_ = adaptation_->input();
-            meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
-          } else if (adaptation_ && !edited) {
-            surfaces_ = adaptation_->input();  // a restart lights the meshes as adapted so far
+            // The thread's input follows, for a restart.
+            for (radiosity::SurfaceChange& c :
+                 applyEdit(*solver, editedScene->first, editedScene->second, edited, adaptation_.get()))
+              surfaces_[c.surface] = std::move(c.now);
+            if (adaptation_) meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
+          } else {
+            if (adaptation_) surfaces_ = adaptation_->input();  // a restart lights the meshes as adapted so far
+            solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
           }
-          if (edited) applyEdit(solver, surfaces_, settings_.solver);
-          else solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
           done = solver->converged(settings_.converge);
           failed = unpublished = false;
           publish(*solver, done);
@@ -172,24 +171,12 @@ void LightingThread::restart() {
   wake_.notify_all();
 }
 
-void LightingThread::edit(std::vector<radiosity::Surface> surfaces) {
-  {
-    std::lock_guard lock(mutex_);
-    edited_ = std::move(surfaces);
-    ++editsRequested_;
-  }
-  wake_.notify_all();
-}
-
-void LightingThread::edit(const Scene& scene, const MeshedScene& meshed) {
-  if (!adaptation_) {
-    edit(radiosityInput(scene, meshed));
-    return;
-  }
+void LightingThread::edit(const Scene& scene, const MeshedScene& meshed, std::span<const EditedSurface> edited) {
   auto copy = std::make_unique<std::pair<Scene, MeshedScene>>(scene, meshed);
   {
     std::lock_guard lock(mutex_);
     editedScene_ = std::move(copy);
+    addEdits(edited_, edited);
     ++editsRequested_;
   }
   wake_.notify_all();

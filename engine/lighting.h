@@ -14,6 +14,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <thread>
 #include <utility>
@@ -34,12 +35,15 @@ uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
                  const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress = {},
                  MeshAdaptation* adaptation = nullptr);
 
-// Takes a scene edit into a solution: `surfaces` (the same surfaces in the same order, some moved,
-// some meshed again) replace the solver's, whose light is corrected rather than shot again
-// (radiosity::Solver::edit). The one way edits reach the light, from the window's lighting
-// thread and from `walkrad render --move`.
-void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<radiosity::Surface>& surfaces,
-               const radiosity::SolverSettings& settings);
+// Takes a scene edit into a solution: the surfaces `edited` names (SceneEditor::takeEdited), as
+// `meshed` has them now, replace the solver's, whose light is corrected rather than shot again
+// (radiosity::Solver::edit); the other surfaces keep their elements and light. With
+// `adaptation` (whose input the solver has), the adaptation takes the edit first and the solver
+// its meshes of them (MeshAdaptation::edit). Returns what the solver took. The one way edits
+// reach the light, from the window's lighting thread and from `walkrad render --move`.
+std::vector<radiosity::SurfaceChange> applyEdit(radiosity::Solver& solver, const Scene& scene, const MeshedScene& meshed,
+                                                std::span<const EditedSurface> edited,
+                                                MeshAdaptation* adaptation = nullptr);
 
 struct LightingSettings {
   radiosity::SolverSettings solver{.overshoot = true};
@@ -89,13 +93,11 @@ class LightingThread {
   // shows its light. Restarting throws the solution away and starts again from the emitters.
   void setPaused(bool paused);
   void restart();
-  // The scene changed (an object moved): `surfaces` replace the old ones, in the same order with
-  // the same meshes. Applied after the shot in flight; the snapshots count the edits applied.
-  // Not for a thread that adapts its meshes (it has its own): the overload below.
-  void edit(std::vector<radiosity::Surface> surfaces);
-  // The same for a thread made from a scene: `meshed` are the edited scene's meshes at their
-  // patch sizes; surfaces that did not change keep their refinement.
-  void edit(const Scene& scene, const MeshedScene& meshed);
+  // The scene changed (objects moved): the surfaces `edited` names (SceneEditor::takeEdited)
+  // take their meshes in `meshed` (the edited scene's, at their patch sizes); the others keep
+  // their light and, adapting, their refinement. Applied after the shot in flight, with any
+  // edits sent since; the snapshots count the edits applied.
+  void edit(const Scene& scene, const MeshedScene& meshed, std::span<const EditedSurface> edited);
 
  private:
   void start();
@@ -108,10 +110,10 @@ class LightingThread {
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   bool stop_ = false, paused_ = false, restart_ = false;
-  std::vector<radiosity::Surface> edited_;  // the surfaces of the newest edit not yet applied
-  std::unique_ptr<MeshAdaptation> adaptation_;                       // the thread's own once it runs
-  std::unique_ptr<std::pair<Scene, MeshedScene>> editedScene_;       // with adaptation: the newest edit
-  std::shared_ptr<const MeshedScene> meshes_;                        // with adaptation: the last published
+  std::unique_ptr<std::pair<Scene, MeshedScene>> editedScene_;  // the newest edit not yet applied
+  std::vector<EditedSurface> edited_;                            // the surfaces of the edits not yet applied
+  std::unique_ptr<MeshAdaptation> adaptation_;                   // the thread's own once it runs
+  std::shared_ptr<const MeshedScene> meshes_;                    // with adaptation: the last published
   uint64_t editsRequested_ = 0, editsApplied_ = 0;
   std::shared_ptr<const LightingSnapshot> latest_;
   uint64_t version_ = 0;

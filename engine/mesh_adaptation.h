@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace engine {
@@ -43,29 +44,35 @@ class MeshAdaptation {
   const std::vector<radiosity::Surface>& input() const { return input_; }
 
   // One pass over every surface, judged on `solver`'s light, whose input must be input().
-  // When a mesh changed, the solver takes the new input (Solver::edit). Returns the elements
-  // removed plus added (0: nothing changed).
+  // The surfaces whose meshes changed go to the solver (Solver::edit), their elements by their
+  // keys: the adaptive mesh's element handles. Returns the elements removed plus added (0:
+  // nothing changed).
   size_t pass(radiosity::Solver& solver);
   // A pass when one is due (see kPassFall, kMaxConvergedPasses; `converge` is the unshot
   // fraction the caller shoots to). Returns whether a mesh changed.
   bool adaptIfDue(radiosity::Solver& solver, double converge);
 
-  // The scene was edited (objects moved): surfaces whose geometry changed take `meshed`'s mesh
-  // and lose their refinement, the others keep theirs. The solver is then to take input()
-  // (engine::applyEdit). Passes are due again as the light after the edit settles.
-  void edit(const Scene& scene, const MeshedScene& meshed);
+  // The scene was edited (objects moved): the surfaces `edited` names take `meshed`'s mesh and
+  // lose their refinement, the others keep theirs. Returns the solver's part of it: their input
+  // now (engine::applyEdit). A surface moved along keeps its mesh's plane coordinates, so the
+  // mesh it takes is one its refinement came from: the keys of the elements it still had go on.
+  // Passes are due again as the light after the edit settles.
+  std::vector<radiosity::SurfaceChange> edit(const Scene& scene, const MeshedScene& meshed,
+                                             std::span<const EditedSurface> edited);
 
   uint64_t passes() const { return passes_; }  // passes that changed a mesh
 
  private:
-  // The surface's adaptive mesh, made when it is first refined; null when the mesher refuses
-  // the surface where it stands (it is then not refined, and tried again at the next pass).
+  // The surface's adaptive mesh, made when it is first refined from SurfaceMesh::polygon: the
+  // mesh the surface has, element for element, whose handles are its keys. Null (and the surface
+  // not refined until it is edited) where no adaptive mesh is that mesh (adaptiveMeshOf).
   mesher::AdaptiveMesh* adaptiveMesh(size_t surface);
 
   Scene scene_;
   MeshedScene meshed_;
   radiosity::RefinementSettings settings_;
   std::vector<std::unique_ptr<mesher::AdaptiveMesh>> adaptive_;  // per surface, made when first refined
+  std::vector<uint8_t> unadaptable_;  // per surface: no adaptive mesh reproduces its mesh
   std::vector<radiosity::Surface> input_;
   double nextPassAt_ = kPassFall;
   int convergedPasses_ = 0;

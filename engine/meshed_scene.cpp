@@ -1,8 +1,18 @@
 #include "engine/meshed_scene.h"
 
+#include <algorithm>
 #include <string>
 
 namespace engine {
+
+void addEdits(std::vector<EditedSurface>& edits, std::span<const EditedSurface> more) {
+  for (const EditedSurface& e : more) {
+    const auto at = std::lower_bound(edits.begin(), edits.end(), e.surface,
+                                     [](const EditedSurface& a, uint32_t surface) { return a.surface < surface; });
+    if (at != edits.end() && at->surface == e.surface) at->meshedAnew = at->meshedAnew || e.meshedAnew;
+    else edits.insert(at, e);
+  }
+}
 
 MeshedScene meshScene(const Scene& scene, size_t* repeats) {
   MeshedScene meshed;
@@ -29,6 +39,7 @@ radiosity::Surface radiosityInput(const Scene& scene, const MeshedScene& meshed,
   radiosity::Surface r;
   r.vertices = meshed.surfaces[surface].positions;
   r.elements = meshed.surfaces[surface].mesh.elements;
+  r.keys = meshed.surfaces[surface].keys;
   r.normal = s.normal;
   r.reflectance = m.reflectance;
   r.emission = m.emission;
@@ -41,6 +52,14 @@ std::vector<radiosity::Surface> radiosityInput(const Scene& scene, const MeshedS
   out.reserve(scene.surfaces.size());
   for (size_t i = 0; i < scene.surfaces.size(); ++i) out.push_back(radiosityInput(scene, meshed, i));
   return out;
+}
+
+std::vector<radiosity::SurfaceChange> radiosityChanges(const Scene& scene, const MeshedScene& meshed,
+                                                       std::span<const EditedSurface> edited) {
+  std::vector<radiosity::SurfaceChange> changes;
+  changes.reserve(edited.size());
+  for (const EditedSurface& e : edited) changes.push_back({e.surface, radiosityInput(scene, meshed, e.surface), e.meshedAnew});
+  return changes;
 }
 
 }  // namespace engine

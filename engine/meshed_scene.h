@@ -7,6 +7,8 @@
 #include "engine/surface_mesh.h"
 #include "radiosity/radiosity.h"
 
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace engine {
@@ -14,6 +16,17 @@ namespace engine {
 struct MeshedScene {
   std::vector<SurfaceMesh> surfaces;  // per Scene::surfaces, in order
 };
+
+// A surface an edit changed (SceneEditor::setPose): moved along with its object, its mesh and
+// its elements' keys going on, or meshed anew.
+struct EditedSurface {
+  uint32_t surface = 0;
+  bool meshedAnew = false;
+  bool operator==(const EditedSurface&) const = default;
+};
+
+// Adds `more` to `edits` (by surface, each once): a surface meshed anew in either was meshed anew.
+void addEdits(std::vector<EditedSurface>& edits, std::span<const EditedSurface> more);
 
 // The most elements a scene's meshes may have in all: far above the large models' (a living room
 // of 2.6 million), and about 2 GB of meshes, solver and display data.
@@ -34,10 +47,14 @@ MeshedScene meshScene(const Scene& scene, size_t* repeats = nullptr);
 // of the path tracer. Three patch sizes shoot 40% fewer times but leave that face 3-4% too dark.
 constexpr double kShootingPatchPatches = 2;
 
-// The solver's input: per surface its world vertices and elements, normal, reflectance and
-// emission, elements grouped into shooting patches of kShootingPatchPatches patch sizes.
+// The solver's input: per surface its world vertices, elements and their keys, normal,
+// reflectance and emission, elements grouped into shooting patches of kShootingPatchPatches
+// patch sizes.
 std::vector<radiosity::Surface> radiosityInput(const Scene& scene, const MeshedScene& meshed);
 // The same for one surface (its index in both).
 radiosity::Surface radiosityInput(const Scene& scene, const MeshedScene& meshed, size_t surface);
+// The solver's edit (radiosity::Solver::edit) of the surfaces `edited` names: their input now.
+std::vector<radiosity::SurfaceChange> radiosityChanges(const Scene& scene, const MeshedScene& meshed,
+                                                       std::span<const EditedSurface> edited);
 
 }  // namespace engine

@@ -32,7 +32,10 @@ SceneEditor::SceneEditor(Scene scene, MeshedScene meshed)
   homeSurfaces_ = scene_.surfaces;
   removeContacts(homeSurfaces_);
   uncut_ = homeSurfaces_;
-  for (const SurfaceMesh& m : meshed_.surfaces) homePositions_.push_back(m.positions);
+  for (const SurfaceMesh& m : meshed_.surfaces) {
+    homePositions_.push_back(m.positions);
+    homeFrames_.push_back(m.worldFromPlane);
+  }
   homeMesh_.assign(scene_.surfaces.size(), 1);
   for (const Object& o : scene_.objects) homePoses_.push_back(poseOf(o));
   contactTolerance_ = contactTolerance(scene_);
@@ -62,6 +65,7 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   const glm::dmat3 turn = to.worldFromObject * glm::transpose(from.worldFromObject);
   const bool atHome = pose == homePoses_[object];
   auto place = [&](const Vec3& p) { return atHome ? p : turn * (p - from.translation) + to.translation; };
+  auto turned = [&](const Vec3& d) { return atHome ? d : turn * d; };
   std::vector<Surface> cut = uncut_;
   std::vector<Surface> placed;  // the object's surfaces as uncut_ is to hold them
   for (uint32_t s : surfacesOf_[object]) {
@@ -100,18 +104,25 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   o.position = pose.position;
   o.rotateYDeg = pose.rotateYDeg;
   for (size_t k = 0; k < placed.size(); ++k) uncut_[surfacesOf_[object][k]] = std::move(placed[k]);
+  std::vector<EditedSurface> edited;
   for (size_t k = 0, m = 0; k < changed.size(); ++k) {
     const uint32_t s = changed[k];
     scene_.surfaces[s] = std::move(cut[s]);
-    if (m < remeshed.size() && remeshed[m] == s) {
+    const bool anew = m < remeshed.size() && remeshed[m] == s;
+    edited.push_back({s, anew});
+    if (anew) {
       meshed_.surfaces[s] = std::move(meshes[m++]);
       homeMesh_[s] = 0;
     } else {
-      std::vector<Vec3>& positions = meshed_.surfaces[s].positions;
-      for (size_t i = 0; i < positions.size(); ++i) positions[i] = place(homePositions_[s][i]);
+      // Moved along: the same plane coordinates, in a frame moved with the surface.
+      SurfaceMesh& mesh = meshed_.surfaces[s];
+      for (size_t i = 0; i < mesh.positions.size(); ++i) mesh.positions[i] = place(homePositions_[s][i]);
+      const PlaneFrame& loaded = homeFrames_[s];
+      mesh.worldFromPlane = {place(loaded.origin), turned(loaded.u), turned(loaded.v)};
     }
   }
   remeshed_ = std::move(remeshed);
+  addEdits(edited_, edited);
   scene_.computeBounds();
   return true;
 }

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace engine {
@@ -51,6 +52,10 @@ class SceneEditor {
   // The surfaces the last setPose meshed again (their element counts may differ); the object's
   // other surfaces kept their meshes.
   const std::vector<uint32_t>& remeshed() const { return remeshed_; }
+  // The surfaces that setPose changed since the last call, for the light to take
+  // (engine::applyEdit): the moved objects' surfaces, and every surface meshed again (meshed
+  // anew, though it was moved along in another call).
+  std::vector<EditedSurface> takeEdited() { return std::exchange(edited_, {}); }
 
  private:
   Scene scene_;
@@ -62,11 +67,13 @@ class SceneEditor {
   // objects' poses.
   std::vector<Surface> homeSurfaces_;
   std::vector<std::vector<Vec3>> homePositions_;
+  std::vector<PlaneFrame> homeFrames_;
   std::vector<uint8_t> homeMesh_;  // per surface: its mesh is still the loaded one (moved rigidly)
   std::vector<ObjectPose> homePoses_;
   double contactTolerance_ = 0;
   mesher::Mesher mesher_;
   std::vector<uint32_t> remeshed_;
+  std::vector<EditedSurface> edited_;
 };
 
 }  // namespace engine

@@ -9,17 +9,8 @@ namespace engine {
 
 namespace {
 
-// A 2-D frame in the surface's plane whose counter-clockwise is counter-clockwise about the
-// front normal. Surfaces facing along a world axis use two world axes, so their coordinates are
-// exact and axis-aligned edges stay axis-aligned for the quadtree.
-struct PlaneFrame {
-  Vec3 origin, u, v;
-  mesher::Vec2 project(const Vec3& p) const { return {glm::dot(p - origin, u), glm::dot(p - origin, v)}; }
-  Vec3 lift(mesher::Vec2 p, const Vec3& normal, double offset) const {
-    return origin + u * p.x + v * p.y + normal * (offset - glm::dot(origin, normal));
-  }
-};
-
+// Surfaces facing along a world axis use two world axes, so their coordinates are exact and
+// axis-aligned edges stay axis-aligned for the quadtree.
 PlaneFrame planeFrame(const Surface& s) {
   if (const auto axes = axisPlaneAxes(s.normal)) return {Vec3{0}, axes->first, axes->second};
   size_t longest = 0;
@@ -51,6 +42,21 @@ bool isOneElement(const mesher::PolygonWithHoles& polygon, double patchSize) {
 
 }  // namespace
 
+mesher::Vec2 PlaneFrame::project(const Vec3& p) const { return {glm::dot(p - origin, u), glm::dot(p - origin, v)}; }
+
+Vec3 PlaneFrame::lift(mesher::Vec2 p, const Vec3& normal, double offset) const {
+  return origin + u * p.x + v * p.y + normal * (offset - glm::dot(origin, normal));
+}
+
+uint64_t elementKey(mesher::ElementId id) { return uint64_t{id.generation} << 32 | id.slot; }
+
+std::vector<uint64_t> elementKeys(std::span<const mesher::ElementId> ids) {
+  std::vector<uint64_t> keys;
+  keys.reserve(ids.size());
+  for (const mesher::ElementId id : ids) keys.push_back(elementKey(id));
+  return keys;
+}
+
 mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf) {
   const PlaneFrame frame = planeFrame(frameOf);
   mesher::PolygonWithHoles polygon;
@@ -63,14 +69,6 @@ mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& fra
     for (const Vec3& p : hole) ring.push_back(frame.project(p));
   }
   return polygon;
-}
-
-std::vector<mesher::Vec2> planeVertices(const Surface& surface, const std::vector<Vec3>& positions) {
-  const PlaneFrame frame = planeFrame(surface);
-  std::vector<mesher::Vec2> vertices;
-  vertices.reserve(positions.size());
-  for (const Vec3& p : positions) vertices.push_back(frame.project(p));
-  return vertices;
 }
 
 std::optional<std::pair<Vec3, Vec3>> axisPlaneAxes(const Vec3& n) {
@@ -91,12 +89,15 @@ SurfaceMesh meshSurface(const Surface& surface) {
 
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher) {
   SurfaceMesh result;
+  result.worldFromPlane = planeFrame(surface);
   result.polygon = planePolygon(surface, surface);
   if (isOneElement(result.polygon, surface.patchSize))
     result.mesh = {result.polygon.outer, {{0, 1, 2, mesher::Mesh::kNone}}};
   else
     result.mesh = mesher.mesh(result.polygon, {surface.patchSize});
-  result.positions = worldPositions(surface, result.mesh.vertices);
+  result.keys.reserve(result.mesh.elements.size());
+  for (uint32_t i = 0; i < result.mesh.elements.size(); ++i) result.keys.push_back(elementKey({i, 0}));
+  addWorldPositions(surface, result);
   return result;
 }
 
@@ -107,16 +108,18 @@ SceneError meshRefusal(const mesher::MeshRefused& refused, const std::string& fi
                     which.empty() ? refused.what() : which + ": " + refused.what());
 }
 
-std::vector<Vec3> worldPositions(const Surface& surface, const std::vector<mesher::Vec2>& vertices) {
-  const PlaneFrame frame = planeFrame(surface);
-  // The surface's own points come first in the mesh, in the same order: keep them exact.
-  std::vector<Vec3> positions;
+void addWorldPositions(const Surface& surface, SurfaceMesh& mesh) {
+  std::vector<Vec3>& positions = mesh.positions;
+  const std::vector<mesher::Vec2>& vertices = mesh.mesh.vertices;
   positions.reserve(vertices.size());
-  positions = surface.outer;
-  for (const Ring3& hole : surface.holes) positions.insert(positions.end(), hole.begin(), hole.end());
+  if (positions.empty()) {
+    // The surface's own points come first in the mesh, in the same order: keep them exact.
+    positions = surface.outer;
+    for (const Ring3& hole : surface.holes) positions.insert(positions.end(), hole.begin(), hole.end());
+  }
   const double offset = surface.planeOffset();
-  for (size_t i = positions.size(); i < vertices.size(); ++i) positions.push_back(frame.lift(vertices[i], surface.normal, offset));
-  return positions;
+  for (size_t i = positions.size(); i < vertices.size(); ++i)
+    positions.push_back(mesh.worldFromPlane.lift(vertices[i], surface.normal, offset));
 }
 
 }  // namespace engine

@@ -42,6 +42,20 @@ struct Surface {
   // Optional substructuring: per element, its shooting patch (0-based, local to this surface,
   // every index below the largest used). Empty: each element shoots on its own.
   std::vector<uint32_t> patchOfElement;
+  // Per element, its key: unique within the surface and the same for as long as the element
+  // lives, so that an edit (Solver::edit) knows which elements go on. Empty: each element's index.
+  std::vector<uint64_t> keys;
+};
+
+// A surface of an edit (Solver::edit): `now` replaces surface `surface`. An element before
+// whose key is among now's goes on as that element (it keeps its light; it moved when its own
+// corners differ); keys that went are elements removed, new keys elements added.
+struct SurfaceChange {
+  uint32_t surface = 0;
+  Surface now;
+  // Meshed anew rather than changed element by element: none of its elements goes on, whatever
+  // the keys say (a new mesh numbers its elements afresh).
+  bool meshedAnew = false;
 };
 
 // Groups a surface's elements into shooting patches of about `patchEdge` across: the element
@@ -100,6 +114,7 @@ struct Stats {
   uint64_t renormalisedShots = 0;  // shots whose corrections were too big for the rest to absorb
   uint64_t corrections = 0;        // patches whose light was taken back after an edit (Solver::edit)
   uint64_t windowedCorrections = 0;  // of those, corrected in a window of their hemisphere only
+  uint64_t editedSurfaces = 0;     // surfaces that edits replaced (Solver::edit)
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area
   glm::dvec3 absorbedPower{0};     // absorbed by the front of elements, (1 - rho) of what arrives
@@ -127,8 +142,9 @@ class Solver {
  public:
   // Copies the surfaces' geometry and materials; each element starts at its emission, each
   // patch's unshot radiance is its emission. Throws std::invalid_argument for an element with
-  // a corner index outside its surface's vertices, fewer than 3 corners, zero area, or a patch
-  // grouping of the wrong size; and what pxpl5::HemisphereRenderer throws for the settings.
+  // a corner index outside its surface's vertices, fewer than 3 corners, zero area, a patch
+  // grouping or keys of the wrong size, or a key given twice in a surface; and what
+  // pxpl5::HemisphereRenderer throws for the settings.
   Solver(std::span<const Surface> surfaces, const SolverSettings& settings = {});
   ~Solver();
   Solver(const Solver&) = delete;
@@ -180,10 +196,10 @@ class Solver {
   // looks at every patch).
   std::vector<glm::dvec3> vertexRadiance(uint32_t surface, const glm::dvec3& ambient) const;
 
-  // An edit of the scene (objects moved, surfaces meshed again): `surfaces`, as many as before
-  // and in the same order, replace the solver's. Elements that are still there (also on a
-  // remeshed surface, where their corners did not change) keep their light; new ones start from
-  // their emission. Nothing is restarted (after Chen 1990, "Incremental radiosity"): every patch
+  // An edit of the scene (objects moved, surfaces meshed again or refined): each change replaces
+  // its surface; the surfaces it names none of keep everything. Elements that go on (by their
+  // keys, SurfaceChange) keep their light; new ones start from their emission. Nothing is
+  // restarted (after Chen 1990, "Incremental radiosity"): every patch
   // that has shot and may see what changed has its light taken back along the old geometry's
   // factors exactly as its shots sent it (negative light where it fell), and sent again at once
   // along the new geometry's, so the difference is what moves and a move and the move back leave
@@ -192,9 +208,9 @@ class Solver {
   // (SolverSettings::windowedCorrections). Take-backs
   // come first in step(), the most powerful first; until done, the solver has not converged.
   // Take-backs left from an earlier edit
-  // are done first (here). Throws std::invalid_argument for another number of surfaces, or as
-  // the constructor does.
-  void edit(std::span<const Surface> surfaces);
+  // are done first (here). Throws std::invalid_argument (and changes nothing) for a surface that
+  // does not exist or is named twice, or as the constructor does.
+  void edit(std::span<const SurfaceChange> changes);
   // Take-backs still pending after the last edit.
   size_t pendingCorrections() const;
 

@@ -91,6 +91,10 @@ struct Solver::State {
     glm::dvec3 normal{0}, reflectance{0}, emission{0};
     std::vector<std::array<uint32_t, 4>> corners;
     size_t vertexCount = 0;
+    // As given: the elements' shooting patches before any split, and their keys (Surface).
+    std::vector<uint32_t> patchOfElement;
+    std::vector<uint64_t> keys;
+    uint64_t keyOf(uint32_t element) const { return keys.empty() ? element : keys[element]; }
   };
   std::vector<SurfaceData> surfaces;
 
@@ -214,7 +218,9 @@ struct Solver::State {
   explicit State(const SolverSettings& s)
       : settings(s), renderer(pxpl5::HemisphereSettings{s.resolution, pxpl5::Projection::kHemisphere, s.graphicsProcessors}) {}
 
-  void build(std::span<const Surface> input);
+  // The elements and patches of `input`'s surfaces; in an edit, those `input` leaves null are
+  // `kept`'s (the state before), as they were given to it.
+  void build(std::span<const Surface* const> input, const State* kept = nullptr);
   double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye, uint32_t j,
                     double unoccluded) const;
   // The near and small receivers among elements [begin, end) of shooter p's frame judged (see
@@ -296,40 +302,66 @@ struct Solver::State {
 
 // ---- setup -----------------------------------------------------------------------------------
 
-void Solver::State::build(std::span<const Surface> input) {
+namespace {
+
+// A given surface's own checks (the constructor's contract), before anything is built from it.
+void checkSurface(const Surface& in, const std::string& where) {
+  if (!in.patchOfElement.empty() && in.patchOfElement.size() != in.elements.size())
+    throw std::invalid_argument(where + ": patchOfElement has the wrong size");
+  if (in.keys.empty()) return;
+  if (in.keys.size() != in.elements.size()) throw std::invalid_argument(where + ": keys has the wrong size");
+  std::vector<uint64_t> sorted = in.keys;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) throw std::invalid_argument(where + ": a key given twice");
+}
+
+}  // namespace
+
+void Solver::State::build(std::span<const Surface* const> input, const State* kept) {
   size_t elementTotal = 0;
-  for (const Surface& s : input) elementTotal += s.elements.size();
+  for (size_t si = 0; si < input.size(); ++si) elementTotal += input[si] ? input[si]->elements.size() : kept->surfaces[si].elementCount;
   receiver.reserve(elementTotal);
   soupVertices.reserve(elementTotal * 4);
   soupPolygons.reserve(elementTotal);
 
   std::vector<std::vector<uint32_t>> members;  // per global patch, its elements
   for (size_t si = 0; si < input.size(); ++si) {
-    const Surface& in = input[si];
+    const Surface* in = input[si];
     const std::string where = "radiosity::Solver: surface " + std::to_string(si);
-    if (!in.patchOfElement.empty() && in.patchOfElement.size() != in.elements.size())
-      throw std::invalid_argument(where + ": patchOfElement has the wrong size");
     SurfaceData& s = surfaces.emplace_back();
+    if (in) {
+      checkSurface(*in, where);
+      s.normal = glm::normalize(in->normal);
+      s.reflectance = glm::clamp(in->reflectance, 0.0, 1.0);
+      s.emission = in->emission;
+      s.corners = in->elements;
+      s.vertexCount = in->vertices.size();
+      s.patchOfElement = in->patchOfElement;
+      s.keys = in->keys;
+    } else {
+      s = kept->surfaces[si];
+    }
     s.firstElement = static_cast<uint32_t>(receiver.size());
-    s.elementCount = static_cast<uint32_t>(in.elements.size());
+    s.elementCount = static_cast<uint32_t>(s.corners.size());
     s.firstPatch = static_cast<uint32_t>(members.size());
-    s.normal = glm::normalize(in.normal);
-    s.reflectance = glm::clamp(in.reflectance, 0.0, 1.0);
-    s.emission = in.emission;
-    s.corners = in.elements;
-    s.vertexCount = in.vertices.size();
     uint32_t patches = 0;
-    for (size_t e = 0; e < in.elements.size(); ++e) {
-      const std::array<uint32_t, 4>& c = in.elements[e];
-      Polygon3 p;
-      p.n = c[3] == kNone ? 3 : 4;
-      for (int k = 0; k < p.n; ++k) {
-        if (c[k] >= in.vertices.size())
-          throw std::invalid_argument(where + ", element " + std::to_string(e) + ": corner index out of range");
-        p.v[k] = in.vertices[c[k]];
+    for (uint32_t e = 0; e < s.elementCount; ++e) {
+      if (in) {
+        const std::array<uint32_t, 4>& c = in->elements[e];
+        Polygon3 p;
+        p.n = c[3] == kNone ? 3 : 4;
+        for (int k = 0; k < p.n; ++k) {
+          if (c[k] >= in->vertices.size())
+            throw std::invalid_argument(where + ", element " + std::to_string(e) + ": corner index out of range");
+          p.v[k] = in->vertices[c[k]];
+        }
+        receiver.push_back(makeReceiver(p, s.normal));
+        if (!(receiver.back().area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
+      } else {
+        receiver.push_back(kept->receiver[kept->surfaces[si].firstElement + e]);  // a surface no edit named
       }
-      const Receiver& r = receiver.emplace_back(makeReceiver(p, s.normal));
-      if (!(r.area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
+      const Receiver& r = receiver.back();
+      const Polygon3& p = r.polygon;
       const uint32_t j = static_cast<uint32_t>(receiver.size() - 1);
       centre.push_back(r.centre);
       targets.push_back(r.centre);
@@ -342,7 +374,7 @@ void Solver::State::build(std::span<const Surface> input) {
       radiance.push_back(s.emission);
       elementUnshot.push_back(s.emission);
       sent.emplace_back();
-      const uint32_t local = in.patchOfElement.empty() ? static_cast<uint32_t>(e) : in.patchOfElement[e];
+      const uint32_t local = s.patchOfElement.empty() ? e : s.patchOfElement[e];
       patches = std::max(patches, local + 1);
       if (members.size() < s.firstPatch + patches) members.resize(s.firstPatch + patches);
       members[s.firstPatch + local].push_back(j);
@@ -791,7 +823,10 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
 
 Solver::Solver(std::span<const Surface> surfaces, const SolverSettings& settings)
     : state_(std::make_unique<State>(settings)) {
-  state_->build(surfaces);
+  std::vector<const Surface*> given;
+  given.reserve(surfaces.size());
+  for (const Surface& s : surfaces) given.push_back(&s);
+  state_->build(given);
 }
 
 Solver::~Solver() = default;
@@ -899,43 +934,53 @@ struct Solver::Edit {
 
 namespace {
 
-std::array<double, 12> cornersKey(const Polygon3& polygon) {
-  std::array<double, 12> key{};
-  for (int k = 0; k < polygon.n; ++k) key[3 * k] = polygon.v[k].x, key[3 * k + 1] = polygon.v[k].y, key[3 * k + 2] = polygon.v[k].z;
-  return key;
+bool sameCorners(const Polygon3& a, const Polygon3& b) {
+  return a.n == b.n && std::equal(a.v.begin(), a.v.begin() + a.n, b.v.begin());
 }
 
 }  // namespace
 
-void Solver::edit(std::span<const Surface> surfaces) {
+void Solver::edit(std::span<const SurfaceChange> changes) {
   while (correct()) {
   }
   State& old = *state_;
-  if (surfaces.size() != old.surfaces.size())
-    throw std::invalid_argument("radiosity::Solver::edit: " + std::to_string(surfaces.size()) + " surfaces for " +
-                                std::to_string(old.surfaces.size()));
+  std::vector<const Surface*> given(old.surfaces.size(), nullptr);
+  for (const SurfaceChange& c : changes) {
+    if (c.surface >= given.size())
+      throw std::invalid_argument("radiosity::Solver::edit: no surface " + std::to_string(c.surface) + " of " +
+                                  std::to_string(given.size()));
+    if (given[c.surface]) throw std::invalid_argument("radiosity::Solver::edit: surface " + std::to_string(c.surface) + " named twice");
+    given[c.surface] = &c.now;
+  }
   auto now = std::make_unique<State>(old.settings);
   State& n = *now;
-  n.build(surfaces);
+  n.build(given, &old);
   n.stats = old.stats;  // the ledgers go on; emission does not change
+  n.stats.editedSurfaces += changes.size();
   n.history = old.history;
   n.pixelShare = old.pixelShare;
 
-  // Elements map by their corners (a moved surface: one by one, in order): they keep their light.
+  // Elements go on by their keys (on a surface no change named: all of them, as they were):
+  // they keep their light.
   auto edit = std::make_unique<Edit>();
   edit->elementNow.assign(old.receiver.size(), kNone);
   std::vector<uint8_t> changedBefore(old.receiver.size(), 0), mappedNow(n.receiver.size(), 0);
   std::vector<uint32_t> changed[2];  // elements that moved or went (before), moved or came (now)
-  for (size_t si = 0; si < surfaces.size(); ++si) {
+  for (size_t si = 0; si < given.size(); ++si) {
     const State::SurfaceData &a = old.surfaces[si], &b = n.surfaces[si];
-    if (a.elementCount == b.elementCount && a.corners == b.corners) {
+    if (!given[si])
       for (uint32_t k = 0; k < a.elementCount; ++k) edit->elementNow[a.firstElement + k] = b.firstElement + k;
-    } else {
-      std::map<std::array<double, 12>, uint32_t> byCorners;
-      for (uint32_t k = 0; k < a.elementCount; ++k) byCorners[cornersKey(old.receiver[a.firstElement + k].polygon)] = a.firstElement + k;
-      for (uint32_t k = 0; k < b.elementCount; ++k)
-        if (const auto found = byCorners.find(cornersKey(n.receiver[b.firstElement + k].polygon)); found != byCorners.end())
-          edit->elementNow[found->second] = b.firstElement + k;
+  }
+  std::vector<std::pair<uint64_t, uint32_t>> byKey;  // an edited surface's elements before, by key
+  for (const SurfaceChange& c : changes) {
+    if (c.meshedAnew) continue;
+    const State::SurfaceData &a = old.surfaces[c.surface], &b = n.surfaces[c.surface];
+    byKey.clear();
+    for (uint32_t k = 0; k < a.elementCount; ++k) byKey.emplace_back(a.keyOf(k), a.firstElement + k);
+    std::sort(byKey.begin(), byKey.end());
+    for (uint32_t k = 0; k < b.elementCount; ++k) {
+      const auto found = std::lower_bound(byKey.begin(), byKey.end(), std::pair{b.keyOf(k), uint32_t{0}});
+      if (found != byKey.end() && found->first == b.keyOf(k)) edit->elementNow[found->second] = b.firstElement + k;
     }
   }
   for (uint32_t j = 0; j < old.receiver.size(); ++j) {
@@ -950,7 +995,7 @@ void Solver::edit(std::span<const Surface> surfaces) {
     mappedNow[i] = 1;
     n.radiance[i] = old.radiance[j];
     n.elementUnshot[i] = old.elementUnshot[j];
-    if (cornersKey(old.receiver[j].polygon) != cornersKey(n.receiver[i].polygon)) {
+    if (!sameCorners(old.receiver[j].polygon, n.receiver[i].polygon)) {
       changedBefore[j] = 1;
       changed[0].push_back(j);
       changed[1].push_back(i);

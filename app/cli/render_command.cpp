@@ -135,15 +135,8 @@ int runRender(const RenderOptions& options) {
       std::cerr << "walkrad render: --move \"" << options.moves[i] << "\": " << e.what() << "\n";
       return 2;
     }
-    std::vector<radiosity::Surface> input;
-    if (adaptation) {
-      adaptation->edit(editor.scene(), editor.meshed());
-      input = adaptation->input();
-    } else {
-      input = engine::radiosityInput(editor.scene(), editor.meshed());
-    }
     const double remeshMs = millisecondsSince(start);
-    engine::applyEdit(solver, input, settings);
+    engine::applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited(), adaptation.get());
     const bool first = solver->step();  // the first relit solution a display could show
     const double firstUpdateMs = millisecondsSince(start);
     shots += first + solve("move " + std::to_string(i + 1) + " converged");

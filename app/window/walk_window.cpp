@@ -261,7 +261,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     shownMeshes = nullptr;
   };
   auto relight = [&] {
-    lighting.edit(scene, edits.editor().meshed());
+    lighting.edit(scene, edits.editor().meshed(), edits.editor().takeEdited());
     ++editsSent;
     remeshedSinceSent = false;
   };

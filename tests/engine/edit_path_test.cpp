@@ -41,6 +41,35 @@ TEST(EditPath, AMoveChangesOnlyTheObjectAndWhatItStandsOn) {
   for (uint32_t s : editor.remeshed()) EXPECT_EQ(editor.scene().surfaces[s].face, "bottom");
 }
 
+// A drag of the office's chair in three steps, then the light takes it: the solver is handed
+// the chair's surfaces (moved along, their elements going on by key) and the floor, whose
+// footprints changed (meshed anew), and no other.
+TEST(EditPath, AMoveHandsTheSolverOnlyTheObjectAndTheSurfacesWhoseCutOutsChanged) {
+  SceneEditor editor = editorFor("office.json");
+  radiosity::SolverSettings settings;
+  settings.resolution = 64;
+  radiosity::Solver solver(radiosityInput(editor.scene(), editor.meshed()), settings);
+  solver.solve(0, 20);
+  const uint32_t chair = *editor.findObject("chair");
+  ObjectPose pose = poseOf(editor.scene().objects[chair]);
+  for (const Vec3 step : {Vec3{0.1, 0, 0}, Vec3{0.1, 0, -0.1}, Vec3{0.1, 0, -0.1}}) {
+    pose.position += step;
+    editor.setPose(chair, pose);
+  }
+  const std::vector<radiosity::SurfaceChange> changes = applyEdit(solver, editor.scene(), editor.meshed(), editor.takeEdited());
+  const size_t chairSurfaces = editor.surfacesOf(chair).size();
+  EXPECT_EQ(changes.size(), chairSurfaces + 1);
+  EXPECT_EQ(solver.stats().editedSurfaces, chairSurfaces + 1);
+  for (const radiosity::SurfaceChange& c : changes) {
+    const Surface& surface = editor.scene().surfaces[c.surface];
+    EXPECT_EQ(c.meshedAnew, surface.object != chair) << surface.face;
+    if (surface.object != chair) {
+      EXPECT_EQ(editor.scene().objects[surface.object].name + " " + surface.face, "room bottom");
+    }
+  }
+  EXPECT_TRUE(editor.takeEdited().empty());  // taken
+}
+
 // Mean absolute difference of two solutions' element radiance, over the mean, on the surfaces
 // meshed alike in both (all of them, when `sameMeshes`).
 double relativeDifference(const radiosity::Solver& a, const radiosity::Solver& b, bool sameMeshes) {
@@ -72,11 +101,11 @@ TEST(EditPath, MovingAnObjectAndBackRestoresTheSolution) {
   const uint32_t block = *editor.findObject("short block");
   const ObjectPose home = poseOf(editor.scene().objects[block]);
   editor.setPose(block, {home.position + Vec3{120, 0, 100}, home.rotateYDeg + 30});
-  applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
+  applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited());
   solver->solve(0.002);
   const double moved = relativeDifference(*solver, unmoved, false);
   editor.setPose(block, home);
-  applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
+  applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited());
   solver->solve(0.002);
   EXPECT_GT(moved, 0.01);  // the move itself changed the light
   EXPECT_LT(relativeDifference(*solver, unmoved, true), 0.005);
@@ -98,7 +127,7 @@ TEST(EditPath, TheDisplayAfterAMoveHasNoNegativeLight) {
   for (const Vec3 step : {Vec3{0.5, 0, -0.3}, Vec3{-0.4, 0, 0.5}, Vec3{0.3, 0, 0.4}, Vec3{-0.6, 0, -0.2}, Vec3{0.2, 0, -0.5}}) {
     pose.position += step;
     editor.setPose(chair, pose);
-    applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
+    applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited());
     solver->solve(0.01);
     for (uint32_t s = 0; s < solver->surfaceCount(); ++s)
       for (const glm::dvec3& r : solver->vertexRadiance(s, solver->ambient()))

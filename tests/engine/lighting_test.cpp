@@ -115,7 +115,7 @@ TEST(Lighting, MovesSentWhileShootingAreAllTakenIn) {
       lighting.setPaused(false);
     }
     editor.setPose(block, {home.position + offset, home.rotateYDeg});
-    lighting.edit(editor.scene(), editor.meshed());
+    lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
     ++sent;
   }
   const auto done = waitFor(lighting, [&](const LightingSnapshot& s) { return s.edits == sent && s.converged; });
@@ -164,7 +164,7 @@ TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
   ObjectPose pose = poseOf(editor.scene().objects[box]);
   pose.position.x += 0.5;
   editor.setPose(box, pose);
-  lighting.edit(editor.scene(), editor.meshed());
+  lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
   const auto moved = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && s.converged; });
   ASSERT_NE(moved->meshed, nullptr);
   EXPECT_EQ(moved->radiance.size(), displayMesh(*moved->meshed).positions.size());
@@ -187,10 +187,10 @@ constexpr const char* kFarSlab = R"({
                     "faces": { "top": { "holes": [ { "polygon": [[0.5, 5e-6], [0.51, 5e-6], [0.51, 0.01], [0.5, 0.01]] } ] } } } ] }
   ] })";
 
-// Moved rigidly, the slab keeps its loaded mesh; the adaptive passes that would refine its top
-// where it now stands find the mesher refuses it there, and refine the rest: the lighting thread
-// converges after the edit with no error.
-TEST(Lighting, AdaptivePassesPassOverASurfaceTheMesherRefusesWhereItNowStands) {
+// Moved rigidly, the slab keeps its loaded mesh in the plane coordinates it was meshed in, where
+// the adaptive passes refine its top (main made them anew where it stands, and the mesher
+// refused it there): the lighting thread converges after the edit with no error.
+TEST(Lighting, AdaptivePassesRefineAMovedSurfaceTheMesherWouldRefuseWhereItNowStands) {
   Scene loaded = parseScene(kFarSlab, "far-slab.json");
   MeshedScene meshed = meshScene(loaded);
   SceneEditor editor(std::move(loaded), std::move(meshed));
@@ -203,17 +203,19 @@ TEST(Lighting, AdaptivePassesPassOverASurfaceTheMesherRefusesWhereItNowStands) {
   ObjectPose pose = poseOf(editor.scene().objects[slab]);
   pose.position.x += 1;
   ASSERT_TRUE(editor.setPose(slab, pose));
-  const Surface* top = nullptr;
-  for (const Surface& s : editor.scene().surfaces)
-    if (s.object == slab && s.normal.y > 0.5) top = &s;
-  ASSERT_NE(top, nullptr);
-  EXPECT_THROW(meshSurface(*top), mesher::MeshRefused);  // the premise: refused where it stands
+  size_t top = editor.scene().surfaces.size();
+  for (size_t s = 0; s < editor.scene().surfaces.size(); ++s)
+    if (editor.scene().surfaces[s].object == slab && editor.scene().surfaces[s].normal.y > 0.5) top = s;
+  ASSERT_LT(top, editor.scene().surfaces.size());
+  EXPECT_THROW(meshSurface(editor.scene().surfaces[top]), mesher::MeshRefused);  // the premise: refused where it stands
 
-  lighting.edit(editor.scene(), editor.meshed());
+  lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && (s.converged || !s.error.empty()); });
   EXPECT_EQ(done->error, "");
   EXPECT_TRUE(done->converged);
   EXPECT_GT(done->adaptivePasses, 0u);
+  ASSERT_NE(done->meshed, nullptr);
+  EXPECT_GT(done->meshed->surfaces[top].mesh.elements.size(), editor.meshed().surfaces[top].mesh.elements.size());
 }
 
 }  // namespace

@@ -134,8 +134,7 @@ TEST(MeshAdaptation, CoarsensWhereTheShadowWent) {
   ObjectPose pose = poseOf(editor.scene().objects[box]);
   pose.position.x -= 1.5;
   editor.setPose(box, pose);
-  adaptation.edit(editor.scene(), editor.meshed());
-  applyEdit(solver, adaptation.input(), kSettings);
+  applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited(), &adaptation);
   solveTo(*solver, kConverge, UINT64_MAX, {}, &adaptation);
   const ElementSizes after = floorSizes(editor.scene(), adaptation.meshed(), 1.6, 2.4);
   const ElementSizes moved = floorSizes(editor.scene(), adaptation.meshed(), 0.1, 0.9);
@@ -158,6 +157,56 @@ TEST(MeshAdaptation, CoarsensWhereTheShadowWent) {
           << surface.face << " of " << editor.scene().objects[surface.object].name;
     }
   }
+}
+
+// The hovering box turned and moved: its surfaces keep the plane coordinates they were meshed in
+// (only their frame moves), so their adaptive meshes are their meshes again, refining goes on in
+// them, and the vertices they had stay where the move put them. A pass hands the solver only the
+// surfaces it changed.
+TEST(MeshAdaptation, AMovedSurfaceIsRefinedInThePlaneCoordinatesItWasMeshedIn) {
+  SceneEditor editor(shadowScene(), meshScene(shadowScene()));
+  const MeshedScene loaded = editor.meshed();
+  MeshAdaptation adaptation(editor.scene(), editor.meshed(), {});
+  auto solver = std::make_unique<radiosity::Solver>(adaptation.input(), kSettings);
+  solveTo(*solver, kConverge, UINT64_MAX, {}, &adaptation);
+
+  const uint32_t box = *editor.findObject("box");
+  ObjectPose pose = poseOf(editor.scene().objects[box]);
+  pose.position += Vec3{-0.7, 0.2, 0.3};
+  pose.rotateYDeg += 30;
+  ASSERT_TRUE(editor.setPose(box, pose));
+  ASSERT_TRUE(editor.remeshed().empty());  // it touches nothing
+  const std::vector<radiosity::SurfaceChange> changes =
+      applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited(), &adaptation);
+  ASSERT_EQ(changes.size(), editor.surfacesOf(box).size());
+  for (uint32_t s : editor.surfacesOf(box)) {
+    const SurfaceMesh& mesh = adaptation.meshed().surfaces[s];
+    EXPECT_EQ(mesh.polygon.outer, loaded.surfaces[s].polygon.outer);
+    EXPECT_EQ(mesh.mesh.vertices, loaded.surfaces[s].mesh.vertices);
+    EXPECT_EQ(mesh.positions, editor.meshed().surfaces[s].positions);
+  }
+
+  // Passes until one refines a surface of the box, each handing the solver what it changed.
+  size_t refined = 0;
+  for (int tries = 0; tries < 50 && refined == 0; ++tries) {
+    solver->solve(0, 10);
+    const MeshedScene before = adaptation.meshed();
+    const uint64_t edited = solver->stats().editedSurfaces;
+    if (adaptation.pass(*solver) == 0) continue;
+    size_t changed = 0;
+    for (size_t s = 0; s < before.surfaces.size(); ++s) {
+      const SurfaceMesh &was = before.surfaces[s], &is = adaptation.meshed().surfaces[s];
+      if (is.keys == was.keys) continue;
+      ++changed;
+      if (editor.scene().surfaces[s].object != box) continue;
+      ++refined;
+      EXPECT_EQ(std::vector<Vec3>(is.positions.begin(), is.positions.begin() + was.positions.size()), was.positions);
+      for (const Vec3& p : is.positions) EXPECT_NEAR(glm::dot(p, editor.scene().surfaces[s].normal), editor.scene().surfaces[s].planeOffset(), 1e-9);
+    }
+    EXPECT_EQ(solver->stats().editedSurfaces - edited, changed);
+    EXPECT_LT(changed, before.surfaces.size());
+  }
+  EXPECT_GT(refined, 0u);
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ TEST(RandomMoves, TwoHundredMovesKeepMeshesAndEnergyAndComeBack) {
       EXPECT_NEAR(check.elementArea, check.polygonArea, 1e-9 * check.polygonArea);
     }
     footprints += test::surfaceOf(editor.scene(), "room", "bottom").contactHoles;
-    applyEdit(solver, radiosityInput(editor.scene(), editor.meshed()), settings);
+    applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited());
     while (solver->pendingCorrections() > 0) solver->step();
     solver->solve(0, 5);
     ASSERT_LT(solver->ledgerResidual(), 1e-9);

@@ -1,8 +1,11 @@
 // Meshing one surface: a triangle that is already a good element stays one; a repeat of a
-// surface met before gets the mesh meshing it gives.
+// surface met before gets the mesh meshing it gives; every mesh is an adaptive mesh's, under its
+// handles.
 #include "engine/surface_mesh.h"
 
+#include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
+#include "mesher/adaptive_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -43,6 +46,28 @@ TEST(SurfaceMesh, RepeatsInTheKitchenGetTheMeshesMeshingGives) {
     ASSERT_EQ(once.positions, fresh.positions);
   }
   EXPECT_GT(shared.repeats(), scene.surfaces.size() / 2);
+}
+
+// A surface's mesh is the mesh an adaptive mesh of its polygon makes, element for element, and
+// its keys are that mesh's handles for them (element i: slot i, generation 0), so that adaptive
+// refinement and the solver know its elements by key (mesh_adaptation.h). Every surface of the
+// shipped scenes, meshed as a scene is (through one Mesher, repeats and all).
+TEST(SurfaceMesh, AnAdaptiveMeshOfEachShippedSurfaceIsItsMeshUnderItsKeys) {
+  for (const char* name : {"cornell.json", "office.json", "kitchen.json", "box-on-floor.json", "furnace.json"}) {
+    SCOPED_TRACE(name);
+    const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/" + name);
+    const MeshedScene meshed = meshScene(scene);
+    for (size_t s = 0; s < scene.surfaces.size(); ++s) {
+      const SurfaceMesh& m = meshed.surfaces[s];
+      const mesher::AdaptiveMesh adaptive(m.polygon, {scene.surfaces[s].patchSize});
+      const mesher::Mesh snapshot = adaptive.snapshot();
+      ASSERT_EQ(snapshot.elements, m.mesh.elements) << scene.surfaces[s].jsonPath;
+      ASSERT_EQ(snapshot.vertices, m.mesh.vertices) << scene.surfaces[s].jsonPath;
+      const std::vector<mesher::ElementId> ids = adaptive.elements();
+      ASSERT_EQ(elementKeys(ids), m.keys) << scene.surfaces[s].jsonPath;
+      for (uint32_t i = 0; i < ids.size(); ++i) ASSERT_EQ(ids[i], (mesher::ElementId{i, 0}));
+    }
+  }
 }
 
 }  // namespace

@@ -164,16 +164,21 @@ TEST(Mesher, ReusedForManyPolygonsGivesWhatFreshMeshingGives) {
 }
 
 // A whole mesh welds its vertices in tree order, mostly without the point table; an adaptive
-// mesh's leaf-by-leaf emission looks every point up there. Both give the same mesh.
+// mesh's leaf-by-leaf emission looks every point up there. Both give the same mesh, and the
+// adaptive mesh's handles number its elements in that order (slot i, generation 0), which is
+// how a mesh as meshed knows its elements' handles (engine/surface_mesh.h).
 TEST(Mesher, TreeOrderWeldingGivesWhatThePointTableGives) {
   std::mt19937 random(11);
   for (int trial = 0; trial < 200; ++trial) {
     SCOPED_TRACE(trial);
     const PolygonWithHoles polygon = trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial);
     const double patch = 2 + trial % 13;
-    const Mesh whole = meshPolygon(polygon, {patch}), leafByLeaf = AdaptiveMesh(polygon, {patch}).snapshot();
+    const AdaptiveMesh adaptive(polygon, {patch});
+    const Mesh whole = meshPolygon(polygon, {patch}), leafByLeaf = adaptive.snapshot();
     EXPECT_EQ(whole.vertices, leafByLeaf.vertices);
     EXPECT_EQ(whole.elements, leafByLeaf.elements);
+    const std::vector<ElementId> ids = adaptive.elements();
+    for (uint32_t i = 0; i < ids.size(); ++i) ASSERT_EQ(ids[i], (ElementId{i, 0}));
   }
 }
 

@@ -120,7 +120,7 @@ TEST(RadiosityOvershoot, FurnaceWithShootingPatches) {
 TEST(RadiosityOvershoot, AnEditIsCorrectedAsAFreshSolve) {
   Solver solver(roomWithBoard(0, 0.4), overshooting());
   solver.solve(1e-4);
-  solver.edit(roomWithBoard(0.25, 0.4));
+  solver.edit(test::changesOf(roomWithBoard(0.25, 0.4), test::kBoard));
   solver.solve(1e-4);
   EXPECT_LT(solver.ledgerResidual(), 1e-12);
   Solver fresh(roomWithBoard(0.25, 0.4), overshooting());

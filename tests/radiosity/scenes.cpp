@@ -51,6 +51,12 @@ std::vector<Surface> roomWithBoard(double dx, double height) {
   return room;
 }
 
+std::vector<SurfaceChange> changesOf(const std::vector<Surface>& now, std::span<const uint32_t> surfaces) {
+  std::vector<SurfaceChange> changes;
+  for (uint32_t s : surfaces) changes.push_back({s, now[s]});
+  return changes;
+}
+
 double area(const Surface& s, uint32_t e) {
   const auto& c = s.elements[e];
   double a = 0.5 * glm::length(glm::cross(s.vertices[c[1]] - s.vertices[c[0]], s.vertices[c[2]] - s.vertices[c[0]]));

@@ -7,6 +7,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace radiosity::test {
@@ -26,6 +28,12 @@ std::vector<Surface> closedBox(double size, double patchSize, glm::dvec3 reflect
 // A closed unit room lit by a panel under its ceiling, with a horizontal board standing in the
 // light at `height`, offset by `dx` along x.
 std::vector<Surface> roomWithBoard(double dx, double height);
+
+// roomWithBoard's board: its top and its underside.
+inline constexpr uint32_t kBoard[] = {7, 8};
+
+// An edit of `surfaces` (Solver::edit) of these of `now`, keeping their keys.
+std::vector<SurfaceChange> changesOf(const std::vector<Surface>& now, std::span<const uint32_t> surfaces);
 
 // Sum over a surface's elements of area x radiance: its reflected power over pi.
 glm::dvec3 areaTimesRadiance(const Solver& solver, const Surface& surface, uint32_t index);
