@@ -106,6 +106,17 @@ void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& sur
   }
 }
 
+bool followMove(const MeshedScene& meshed, const std::vector<uint32_t>& moved, bool rebuild, DisplayMesh& mesh) {
+  if (!rebuild) {
+    updatePositions(meshed, moved, mesh);
+    return false;
+  }
+  DisplayMesh fresh = displayMesh(meshed, mesh.origin);
+  carryRadiance(mesh, fresh);
+  mesh = std::move(fresh);
+  return true;
+}
+
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {
   std::vector<radiosity::SurfaceLight> lights;
   lights.reserve(scene.surfaces.size());

@@ -48,6 +48,12 @@ void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh);
 // Copies the positions of `surfaces` from `meshed` (after they moved; same meshes), less mesh.origin.
 void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh);
 
+// The display after an object moved (the window's drag, `render --move`): its surfaces `moved`
+// take their new positions, or, when `rebuild` (some surface was meshed again), the display is
+// made anew from `meshed` with the light it had carried over (carryRadiance). Returns whether it
+// was made anew (all of it to upload) rather than moved (positions only).
+bool followMove(const MeshedScene& meshed, const std::vector<uint32_t>& moved, bool rebuild, DisplayMesh& mesh);
+
 // Shades every surface with its emission plus its reflectance times the scene's ambient
 // radiance (the picture before any light is shot); returns that ambient radiance.
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh);

@@ -136,7 +136,13 @@ int runRender(const RenderOptions& options) {
       return 2;
     }
     const double remeshMs = millisecondsSince(start);
-    engine::applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited(), adaptation.get());
+    // What the window's thread that draws does for this move: the edit above, the display
+    // following it, and the copy of the edited scene and meshes that the lighting thread takes
+    // the edit from (LightingThread::edit). The solver's part runs on the lighting thread.
+    engine::followMove(editor.meshed(), editor.surfacesOf(move.object), !editor.remeshed().empty(), mesh);
+    const auto handedOver = std::make_unique<std::pair<engine::Scene, engine::MeshedScene>>(editor.scene(), editor.meshed());
+    const double uiMs = millisecondsSince(start);
+    engine::applyEdit(*solver, handedOver->first, handedOver->second, editor.takeEdited(), adaptation.get());
     const bool first = solver->step();  // the first relit solution a display could show
     const double firstUpdateMs = millisecondsSince(start);
     shots += first + solve("move " + std::to_string(i + 1) + " converged");
@@ -150,6 +156,7 @@ int runRender(const RenderOptions& options) {
     for (uint32_t s : touched) changed += editor.meshed().surfaces[s].mesh.elements.size();
     moveStats.push_back({{"object", editor.scene().objects[move.object].name},
                          {"remesh_ms", remeshMs},
+                         {"ui_ms", uiMs},
                          {"first_update_ms", firstUpdateMs},
                          {"converge_ms", millisecondsSince(start)},
                          {"elements_changed", changed},

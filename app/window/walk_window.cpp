@@ -248,14 +248,12 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
   uint64_t editsSent = 0;
   bool remeshedSinceSent = false;
   auto showMoved = [&](uint32_t object) {
-    if (edits.editor().remeshed().empty() && !shownMeshes) {
-      engine::updatePositions(edits.editor().meshed(), edits.editor().surfacesOf(object), mesh);
+    // The adaptive meshes shown give way to the editor's at a move.
+    const bool rebuild = !edits.editor().remeshed().empty() || shownMeshes;
+    if (!engine::followMove(edits.editor().meshed(), edits.editor().surfacesOf(object), rebuild, mesh)) {
       renderer.updatePositions(mesh.positions);
       return;
     }
-    engine::DisplayMesh fresh = engine::displayMesh(edits.editor().meshed(), mesh.origin);
-    engine::carryRadiance(mesh, fresh);
-    mesh = std::move(fresh);
     renderer.upload(mesh);
     remeshedSinceSent = true;
     shownMeshes = nullptr;

@@ -139,7 +139,7 @@ walkrad_cli_test(render_move 0 ARGS render ${PROJECT_SOURCE_DIR}/assets/cornell.
                  --stats ${out}/cli-move.json
                  STDOUT "move 1 converged in [0-9.e-]+ s: [0-9]+ shots.*move 2 converged"
                  JSON ${out}/cli-move.json
-                 JSON_NUMBERS moves.0.remesh_ms moves.0.first_update_ms moves.0.converge_ms moves.0.elements_changed
+                 JSON_NUMBERS moves.0.remesh_ms moves.0.ui_ms moves.0.first_update_ms moves.0.converge_ms moves.0.elements_changed
                               moves.0.corrections moves.0.windowed_corrections moves.1.converge_ms)
 # A move whose footprint leaves a strip of floor 3 um wide 900 km from the origin, finer than the
 # mesher resolves there: exit 2 naming the option and the floor; no picture is written.

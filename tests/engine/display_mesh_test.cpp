@@ -1,5 +1,6 @@
 #include "engine/display_mesh.h"
 
+#include "engine/scene_editor.h"
 #include "engine/scene_loader.h"
 #include "tests/engine/test_scenes.h"
 
@@ -103,6 +104,47 @@ TEST(DisplayMesh, PositionsAreAboutTheMiddleOfTheMeshes) {
   EXPECT_EQ(v, mesh.positions.size());
   // A rebuild may keep an origin given, for carryRadiance.
   EXPECT_EQ(displayMesh(meshed, glm::dvec3{1, 2, 3}).positions[0], glm::vec3(meshed.surfaces[0].positions[0] - glm::dvec3{1, 2, 3}));
+}
+
+// A moved object's display follows it: made anew with the light carried over when a surface was
+// meshed again (the floor, as the chair leaves it), by positions only (the chair's, nothing
+// else's) when none was (the chair lifted further).
+TEST(DisplayMesh, FollowsAMoveAnewOrByPositions) {
+  const Scene loaded = loadScene(std::string(WALKRAD_ASSETS) + "/office.json");
+  SceneEditor editor(loaded, meshScene(loaded));
+  DisplayMesh mesh = displayMesh(editor.meshed());
+  for (size_t v = 0; v < mesh.radiance.size(); ++v) mesh.radiance[v] = glm::vec3(static_cast<float>(v % 7));
+  const uint32_t chair = *editor.findObject("chair");
+  std::vector<uint8_t> ofChair(editor.scene().surfaces.size(), 0);
+  for (uint32_t s : editor.surfacesOf(chair)) ofChair[s] = 1;
+  ObjectPose pose = poseOf(editor.scene().objects[chair]);
+
+  pose.position.y += 0.5;  // off the floor, whose footprint goes
+  ASSERT_TRUE(editor.setPose(chair, pose));
+  ASSERT_FALSE(editor.remeshed().empty());
+  DisplayMesh before = mesh;
+  EXPECT_TRUE(followMove(editor.meshed(), editor.surfacesOf(chair), true, mesh));
+  EXPECT_EQ(mesh.origin, before.origin);
+  std::vector<uint8_t> remeshed(ofChair.size(), 0);
+  for (uint32_t s : editor.remeshed()) remeshed[s] = 1;
+  for (uint32_t s = 0; s < ofChair.size(); ++s)
+    if (!remeshed[s] && !ofChair[s])  // the same vertices, each with its light
+      for (uint32_t v = mesh.surfaceVertexStart[s]; v < mesh.surfaceVertexStart[s + 1]; ++v) {
+        EXPECT_EQ(mesh.positions[v], before.positions[v - mesh.surfaceVertexStart[s] + before.surfaceVertexStart[s]]);
+        EXPECT_EQ(mesh.radiance[v], before.radiance[v - mesh.surfaceVertexStart[s] + before.surfaceVertexStart[s]]);
+      }
+
+  pose.position.y += 0.3;  // higher still: no footprint changes
+  ASSERT_TRUE(editor.setPose(chair, pose));
+  ASSERT_TRUE(editor.remeshed().empty());
+  before = mesh;
+  EXPECT_FALSE(followMove(editor.meshed(), editor.surfacesOf(chair), false, mesh));
+  for (uint32_t s = 0; s < ofChair.size(); ++s)
+    for (uint32_t v = mesh.surfaceVertexStart[s]; v < mesh.surfaceVertexStart[s + 1]; ++v) {
+      if (ofChair[s]) EXPECT_NEAR(mesh.positions[v].y, before.positions[v].y + 0.3f, 1e-5);
+      else EXPECT_EQ(mesh.positions[v], before.positions[v]);
+    }
+  EXPECT_EQ(mesh.radiance, before.radiance);
 }
 
 TEST(DisplayMesh, AutoExposureMapsTheLogAverageToTheKey) {
