@@ -3,12 +3,10 @@
 // of pieces and the radiosity solver's contour integrals use it.
 #pragma once
 
-#include <glm/vec2.hpp>
-
 #include <cmath>
 #include <numbers>
 
-namespace mesher {
+namespace util {
 
 // The polynomial's coefficients of z^3, z^5, ... z^17 (atan z = z (1 + z^2 (c0 + z^2 (c1 + ...)))),
 // for vector versions that must give the same bits.
@@ -28,10 +26,4 @@ inline double fastAtan2(double y, double x) {
   return x < 0 ? std::numbers::pi - a : a;
 }
 
-// The angle at `at` between the directions to `prev` and `next`, in degrees.
-inline double cornerAngleDeg(glm::dvec2 prev, glm::dvec2 at, glm::dvec2 next) {
-  const glm::dvec2 u = prev - at, v = next - at;
-  return fastAtan2(std::abs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y) * (180 / std::numbers::pi);
-}
-
-}  // namespace mesher
+}  // namespace util
