@@ -44,7 +44,7 @@ void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<rad
 struct LightingSettings {
   radiosity::SolverSettings solver{.overshoot = true};
   // Adaptive refinement while shooting (MeshAdaptation; only for a thread made from a scene).
-  std::optional<radiosity::RefinementSettings> adaptive;
+  std::optional<AdaptiveSettings> adaptive;
   double converge = 1e-3;             // shooting stops once the unshot fraction is below this
   double publishSeconds = 1.0 / 30;   // snapshots at most this often while shooting
 };

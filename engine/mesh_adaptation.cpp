@@ -44,8 +44,11 @@ std::vector<uint32_t> indicesIn(const mesher::AdaptiveMesh& adaptive, const mesh
 
 }  // namespace
 
-MeshAdaptation::MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const radiosity::RefinementSettings& settings)
-    : scene_(scene), meshed_(meshed), settings_(settings), input_(radiosityInput(scene, meshed)) {
+MeshAdaptation::MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const AdaptiveSettings& settings)
+    : scene_(scene),
+      meshed_(meshed),
+      settings_{.threshold = settings.threshold, .minElementSize = settings.minElementSize},
+      input_(radiosityInput(scene, meshed)) {
   adaptive_.resize(scene.surfaces.size());
 }
 

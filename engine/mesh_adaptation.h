@@ -35,7 +35,7 @@ class MeshAdaptation {
 
   // Starts from `meshed` (the scene's meshes at their patch sizes). settings.minElementSize 0
   // stands for a quarter of each surface's patch size.
-  MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const radiosity::RefinementSettings& settings);
+  MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const AdaptiveSettings& settings);
   ~MeshAdaptation();
 
   // The meshes as adapted so far, and the solver's input made from them.

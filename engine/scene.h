@@ -3,7 +3,6 @@
 #pragma once
 
 #include "mesher/polygon.h"
-#include "radiosity/adaptive_refinement.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -103,6 +102,13 @@ struct ImportCounts {
   size_t singles = 0;     // surfaces that are one triangle
 };
 
+// A scene file's settings.adaptive: adaptive refinement while solving (thesis 5.5;
+// mesh_adaptation.h), as radiosity::RefinementSettings takes it, with the same defaults.
+struct AdaptiveSettings {
+  double threshold = 0.25;    // the relative luminance jump across an edge that refines
+  double minElementSize = 0;  // the narrowest refined element, scene units; 0: a quarter of each surface's patch size
+};
+
 struct Scene {
   std::string file;  // as given to the loader, for messages
   std::string units = "m";
@@ -110,7 +116,7 @@ struct Scene {
   double patchSize = 0;  // settings.patch_size, or derived from the scene's size when absent
   // settings.adaptive (threshold, min_element_size): adaptive refinement while solving, on by
   // default for this scene; absent: off unless asked for (walkrad --adapt-threshold).
-  std::optional<radiosity::RefinementSettings> adaptive;
+  std::optional<AdaptiveSettings> adaptive;
   std::vector<Material> materials;
   std::vector<Object> objects;
   std::vector<Camera> cameras;

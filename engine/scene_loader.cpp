@@ -67,7 +67,7 @@ class SceneParser {
   void parseAdaptive(const Json& value) {
     in_.expectObject(value, "settings.adaptive");
     in_.allowOnly(value, "settings.adaptive", {"threshold", "min_element_size"});
-    radiosity::RefinementSettings& adaptive = scene_.adaptive.emplace();
+    AdaptiveSettings& adaptive = scene_.adaptive.emplace();
     if (const auto threshold = value.find("threshold"); threshold != value.end()) {
       adaptive.threshold = in_.number(*threshold, "settings.adaptive.threshold", 0, 10);
       if (adaptive.threshold <= 0) in_.fail(Diag::OutOfRange, "settings.adaptive.threshold", "must be greater than 0");

@@ -139,7 +139,7 @@ TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
   LightingSettings settings;
   settings.converge = 0.05;
   settings.solver.resolution = 128;
-  settings.adaptive = radiosity::RefinementSettings{};
+  settings.adaptive = AdaptiveSettings{};
   LightingThread lighting(editor.scene(), editor.meshed(), settings);
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first->meshed, nullptr);
@@ -197,7 +197,7 @@ TEST(Lighting, AdaptivePassesPassOverASurfaceTheMesherRefusesWhereItNowStands) {
   LightingSettings settings;
   settings.converge = 0.05;
   settings.solver.resolution = 128;
-  settings.adaptive = radiosity::RefinementSettings{.threshold = 0.01};
+  settings.adaptive = AdaptiveSettings{.threshold = 0.01};
   LightingThread lighting(editor.scene(), editor.meshed(), settings);
   const uint32_t slab = *editor.findObject("slab");
   ObjectPose pose = poseOf(editor.scene().objects[slab]);
