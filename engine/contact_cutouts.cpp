@@ -107,9 +107,6 @@ void removeContacts(std::vector<Surface>& surfaces) {
   }
 }
 
-double contactTolerance(const Scene& scene) {
-  const Vec3 size = scene.boundsMax - scene.boundsMin;
-  return 1e-6 * std::max({size.x, size.y, size.z});
-}
+double contactTolerance(const Scene& scene) { return 1e-6 * sceneExtent(scene); }
 
 }  // namespace engine

@@ -6,7 +6,9 @@
 #include "engine/diagnostics.h"
 #include "engine/gltf_files.h"
 #include "engine/gltf_sidecar.h"
+#include "engine/input_file.h"
 #include "engine/json_reader.h"
+#include "engine/load_limits.h"
 #include "engine/unique_names.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -23,12 +23,17 @@
 #pragma once
 
 #include "engine/scene.h"
-#include "engine/scene_loader.h"
 
 #include <string>
 #include <string_view>
 
 namespace engine {
+
+// What the command line may add to a model file.
+struct LoadOptions {
+  std::string units;    // the units of the model's coordinates (else the sidecar's, else m)
+  std::string sidecar;  // this sidecar instead of MODEL.walkrad.json beside the model
+};
 
 // Whether a path names a glTF model (.gltf or .glb, any case).
 bool isGltfPath(const std::string& path);

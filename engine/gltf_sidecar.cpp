@@ -1,7 +1,7 @@
 #include "engine/gltf_sidecar.h"
 
 #include "engine/json_reader.h"
-#include "engine/scene_loader.h"
+#include "engine/load_limits.h"
 
 #include <filesystem>
 

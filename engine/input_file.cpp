@@ -145,4 +145,10 @@ std::variant<std::vector<unsigned char>, FileRefusal> readRegularFileBytes(const
   return readChecked<std::vector<unsigned char>>(path, limits);
 }
 
+std::string readInputFile(const std::string& path) {
+  std::variant<std::string, FileRefusal> read = readRegularFile(path);
+  if (const FileRefusal* refusal = std::get_if<FileRefusal>(&read)) throw SceneError(refusal->diag, path, "", refusal->detail);
+  return std::get<std::string>(std::move(read));
+}
+
 }  // namespace engine

@@ -39,4 +39,9 @@ std::variant<std::string, FileRefusal> readRegularFile(const std::string& path, 
 std::variant<std::vector<unsigned char>, FileRefusal> readRegularFileBytes(const std::string& path,
                                                                           const FileLimits& limits = {});
 
+// The whole text of a file the user named (a scene, sidecar, polygon case or model): readRegularFile,
+// throwing SceneError naming it when it cannot be read (FileUnreadable, NotRegularFile,
+// FileTooLarge).
+std::string readInputFile(const std::string& path);
+
 }  // namespace engine

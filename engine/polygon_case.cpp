@@ -1,6 +1,6 @@
 #include "engine/polygon_case.h"
 
-#include "engine/scene_loader.h"
+#include "engine/load_limits.h"
 
 #include <cmath>
 

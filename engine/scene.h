@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace engine {
@@ -128,5 +129,11 @@ struct Scene {
   // Sets boundsMin and boundsMax from the surfaces (after loading, and after a move).
   void computeBounds();
 };
+
+// The largest side of the scene's bounding box (Scene::computeBounds), in scene units.
+double sceneExtent(const Scene& scene);
+
+// Metres per unit for a `units` value (m, cm, mm, in, ft), or 0 when unknown.
+double metersPerUnit(std::string_view units);
 
 }  // namespace engine

@@ -1,7 +1,7 @@
 #include "engine/scene_editor.h"
 
 #include "engine/contact_cutouts.h"
-#include "engine/scene_loader.h"
+#include "engine/load_limits.h"
 #include "engine/solid_surfaces.h"
 
 #include <glm/common.hpp>

@@ -3,24 +3,22 @@
 #include "engine/contact_cutouts.h"
 #include "engine/coplanar_merge.h"
 #include "engine/diagnostics.h"
-#include "engine/gltf_loader.h"
-#include "engine/input_file.h"
 #include "engine/json_reader.h"
+#include "engine/load_limits.h"
 #include "engine/solid_surfaces.h"
 #include "mesher/polygon.h"
 
-#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <variant>
 
 namespace engine {
 
 namespace {
 
-// Further limits that make a value absurd rather than merely unusual (see scene_loader.h).
+// Further limits that make a value absurd rather than merely unusual (see load_limits.h).
 constexpr double kMinLength = 1e-9;   // shorter edges and sweeps are degenerate, in scene units
 constexpr int kMaxSlices = 256;
 constexpr size_t kMaxPolygonPoints = 1024;  // per profile or hole
@@ -297,15 +295,6 @@ void checkPatchSizes(const Scene& scene) {
 
 }  // namespace
 
-double metersPerUnit(std::string_view units) {
-  if (units == "m") return 1;
-  if (units == "cm") return 0.01;
-  if (units == "mm") return 0.001;
-  if (units == "in") return 0.0254;
-  if (units == "ft") return 0.3048;
-  return 0;
-}
-
 Scene parseSceneFaces(std::string_view text, const std::string& file) {
   const JsonReader in(file);
   const Json root = in.parse(text);
@@ -343,66 +332,6 @@ Scene parseScene(std::string_view text, const std::string& file) {
   Scene scene = parseSceneFaces(text, file);
   preprocessSurfaces(scene);
   return scene;
-}
-
-std::string readInputFile(const std::string& path) {
-  std::variant<std::string, FileRefusal> read = readRegularFile(path);
-  if (const FileRefusal* refusal = std::get_if<FileRefusal>(&read)) throw SceneError(refusal->diag, path, "", refusal->detail);
-  return std::get<std::string>(std::move(read));
-}
-
-Scene loadScene(const std::string& path, const LoadOptions& options) {
-  if (isGltfPath(path)) return loadGltf(path, options);
-  refuseGltfOptions(path, options);
-  return parseScene(readInputFile(path), path);
-}
-
-Scene loadSceneFaces(const std::string& path, const LoadOptions& options) {
-  if (isGltfPath(path)) return loadGltfFaces(path, options);
-  refuseGltfOptions(path, options);
-  return parseSceneFaces(readInputFile(path), path);
-}
-
-void refuseGltfOptions(const std::string& path, const LoadOptions& options) {
-  if (!options.units.empty()) throw SceneError(Diag::GltfOnly, path, "--units", "a scene file states its own units");
-  if (!options.sidecar.empty()) throw SceneError(Diag::GltfOnly, path, "--sidecar");
-}
-
-void checkPatchSize(double patchSize, double extent, const std::string& file, const std::string& place) {
-  if (std::isnan(patchSize) || extent / patchSize > kMaxPatchesPerEdge)
-    throw SceneError(Diag::PatchTooSmall, file, place, "scene extent " + std::to_string(extent));
-}
-
-void checkFaceCount(size_t faces, const std::string& file, const std::string& place) {
-  if (faces > kMaxFaces)
-    throw SceneError(Diag::TooManyFaces, file, place, std::to_string(faces) + " faces by here, at most " + std::to_string(kMaxFaces));
-}
-
-void overridePatchSize(Scene& scene, double patchSize) {
-  checkPatchSize(patchSize, sceneExtent(scene), scene.file, "--patch-size");
-  scene.patchSize = patchSize;
-  for (Surface& s : scene.surfaces) s.patchSize = patchSize;
-}
-
-double sceneExtent(const Scene& scene) {
-  const Vec3 size = scene.boundsMax - scene.boundsMin;
-  return std::max({size.x, size.y, size.z});
-}
-
-void Scene::computeBounds() {
-  bool first = true;
-  for (const Surface& s : surfaces)
-    for (const Vec3& p : s.outer) {
-      boundsMin = first ? p : glm::min(boundsMin, p);
-      boundsMax = first ? p : glm::max(boundsMax, p);
-      first = false;
-    }
-}
-
-const Camera* Scene::findCamera(const std::string& name) const {
-  for (const Camera& camera : cameras)
-    if (camera.name == name) return &camera;
-  return nullptr;
 }
 
 }  // namespace engine

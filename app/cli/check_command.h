@@ -2,7 +2,7 @@
 // where it is and what walkrad does about it.
 #pragma once
 
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 
 #include <string>
 

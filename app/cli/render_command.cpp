@@ -1,15 +1,15 @@
 #include "app/cli/render_command.h"
 
-#include "app/gl/headless_render.h"
 #include "app/cli/import_stats.h"
+#include "app/gl/headless_render.h"
 #include "app/image/atomic_file.h"
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
 #include "engine/lighting.h"
+#include "engine/load_limits.h"
 #include "engine/mesh_adaptation.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,8 @@
 
 #include "app/image/atomic_file.h"
 #include "engine/lighting.h"
-#include "engine/scene_loader.h"
+#include "engine/load_limits.h"
+#include "engine/load_scene.h"
 
 #include <iostream>
 

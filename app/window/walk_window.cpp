@@ -15,9 +15,12 @@
 #include "app/window/walk_controls.h"
 #include "engine/diagnostics.h"
 #include "engine/display_mesh.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
 #include "engine/gltf_loader.h"
+#include "engine/input_file.h"
+#include "engine/lighting.h"
+#include "engine/load_limits.h"
+#include "engine/load_scene.h"
+#include "engine/meshed_scene.h"
 #include "engine/scene_loader.h"
 
 #include <ctime>

@@ -3,7 +3,7 @@
 
 #include "app/cli/adapt_options.h"
 #include "engine/lighting.h"
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 
 #include <optional>
 #include <string>

@@ -5,6 +5,7 @@
 #include "engine/display_mesh.h"
 #include "engine/gltf_loader.h"
 #include "engine/lighting.h"
+#include "engine/load_scene.h"
 #include "engine/meshed_scene.h"
 #include "tests/app/pixel_probe.h"
 #include "tests/app/solved_display.h"

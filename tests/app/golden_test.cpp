@@ -4,8 +4,8 @@
 #include "app/gl/headless_render.h"
 #include "engine/display_mesh.h"
 #include "engine/lighting.h"
+#include "engine/load_scene.h"
 #include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

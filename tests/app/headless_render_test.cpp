@@ -2,7 +2,7 @@
 #include "app/gl/headless_render.h"
 
 #include "engine/display_mesh.h"
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 #include "tests/app/pixel_probe.h"
 
 #include <gtest/gtest.h>

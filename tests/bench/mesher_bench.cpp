@@ -1,6 +1,6 @@
 // Speed of the modified quadtree mesher (thesis chapter 5, figure 6.1).
 // Run: build/tests/walkrad_bench --benchmark_filter=mesh (figures in docs/BENCHMARKS.md).
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 #include "engine/surface_mesh.h"
 #include "mesher/adaptive_mesh.h"
 #include "mesher/mesher.h"

@@ -4,6 +4,7 @@
 #include "app/gl/scene_renderer.h"
 #include "app/view/view_camera.h"
 #include "engine/display_mesh.h"
+#include "engine/load_scene.h"
 #include "engine/scene_loader.h"
 
 #include <benchmark/benchmark.h>

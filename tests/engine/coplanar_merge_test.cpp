@@ -2,6 +2,7 @@
 // one material in one plane become one surface, with every corner kept.
 #include "engine/coplanar_merge.h"
 
+#include "engine/load_scene.h"
 #include "engine/scene_loader.h"
 #include "engine/surface_mesh.h"
 #include "tests/engine/test_scenes.h"

@@ -1,6 +1,6 @@
 #include "engine/display_mesh.h"
 
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>

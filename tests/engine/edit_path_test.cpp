@@ -2,9 +2,9 @@
 // changes, and moving an object and moving it back gives the solution of the unmoved scene.
 #include "engine/display_mesh.h"
 #include "engine/lighting.h"
+#include "engine/load_scene.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -4,6 +4,8 @@
 
 #include "engine/diagnostics.h"
 #include "engine/gltf_sidecar.h"
+#include "engine/load_limits.h"
+#include "engine/load_scene.h"
 #include "tests/engine/gltf_writer.h"
 #include "tests/engine/hostile_input.h"
 

@@ -4,8 +4,8 @@
 #include "engine/gltf_export.h"
 #include "engine/gltf_loader.h"
 #include "engine/lighting.h"
+#include "engine/load_scene.h"
 #include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

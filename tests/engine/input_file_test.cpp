@@ -4,7 +4,7 @@
 #include "engine/input_file.h"
 
 #include "engine/gltf_loader.h"
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 #include "tests/engine/hostile_input.h"
 
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 #include "engine/lighting.h"
 
 #include "engine/display_mesh.h"
+#include "engine/load_scene.h"
 #include "engine/mesh_adaptation.h"
 #include "engine/meshed_scene.h"
 #include "engine/scene_editor.h"

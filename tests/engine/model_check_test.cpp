@@ -1,7 +1,8 @@
 // Model checks: each kind of defect found at its place, and none of the serious kinds in the
 // shipped scenes.
-#include "engine/model_check.h"
 #include "engine/diagnostics.h"
+#include "engine/load_scene.h"
+#include "engine/model_check.h"
 #include "engine/scene_loader.h"
 
 #include <glm/geometric.hpp>

@@ -1,5 +1,5 @@
 // What the loader makes of every feature of spec/scene-format.md.
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 #include "engine/solid_surfaces.h"
 #include "radiosity/adaptive_refinement.h"
 #include "tests/engine/test_scenes.h"

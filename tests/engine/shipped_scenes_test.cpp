@@ -1,5 +1,5 @@
 // The scenes in assets/ load and hold what the project promises of them.
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 #include "engine/surface_mesh.h"
 #include "mesher/mesh_check.h"
 #include "tests/engine/test_scenes.h"

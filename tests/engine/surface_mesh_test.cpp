@@ -2,7 +2,7 @@
 // surface met before gets the mesh meshing it gives.
 #include "engine/surface_mesh.h"
 
-#include "engine/scene_loader.h"
+#include "engine/load_scene.h"
 
 #include <gtest/gtest.h>
 
