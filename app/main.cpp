@@ -6,8 +6,8 @@
 #include "app/cli/render_command.h"
 #include "app/window/walk_window.h"
 #include "engine/diagnostics.h"
-#include "engine/load_limits.h"
-#include "engine/load_scene.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
 
 #include <CLI/CLI.hpp>
 

@@ -80,7 +80,7 @@ struct Camera {
 struct Surface {
   Ring3 outer;               // counter-clockwise seen from the front
   std::vector<Ring3> holes;  // clockwise seen from the front
-  size_t contactHoles = 0;   // the last holes are footprints of faces resting on it (contact_cutouts.h)
+  size_t contactHoles = 0;   // the last holes are footprints of faces resting on it (geometry/contact_cutouts.h)
   Vec3 normal{0, 1, 0};      // unit, toward the front (the side that reflects and emits)
   double area = 0;           // outer minus holes
   uint32_t material = 0;     // index into Scene::materials
@@ -104,7 +104,7 @@ struct ImportCounts {
 };
 
 // A scene file's settings.adaptive: adaptive refinement while solving (thesis 5.5;
-// mesh_adaptation.h), as radiosity::RefinementSettings takes it, with the same defaults.
+// document/mesh_adaptation.h), as radiosity::RefinementSettings takes it, with the same defaults.
 struct AdaptiveSettings {
   double threshold = 0.25;    // the relative luminance jump across an edge that refines
   double minElementSize = 0;  // the narrowest refined element, scene units; 0: a quarter of each surface's patch size

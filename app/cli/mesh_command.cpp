@@ -2,14 +2,14 @@
 
 #include "app/cli/import_stats.h"
 #include "app/image/atomic_file.h"
-#include "engine/gltf_loader.h"
-#include "engine/input_file.h"
-#include "engine/load_limits.h"
-#include "engine/load_scene.h"
-#include "engine/meshed_scene.h"
-#include "engine/polygon_case.h"
-#include "engine/scene_loader.h"
-#include "engine/surface_mesh.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/geometry/surface_mesh.h"
+#include "engine/io/gltf_loader.h"
+#include "engine/io/input_file.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/polygon_case.h"
+#include "engine/io/scene_loader.h"
 #include "mesher/mesh_check.h"
 
 #include <nlohmann/json.hpp>

@@ -3,9 +3,9 @@
 #pragma once
 
 #include "app/cli/adapt_options.h"
-#include "engine/load_scene.h"
-#include "engine/mesh_adaptation.h"
-#include "engine/meshed_scene.h"
+#include "engine/document/mesh_adaptation.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 #include "engine/scene.h"
 #include "radiosity/radiosity.h"
 

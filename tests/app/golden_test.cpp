@@ -2,10 +2,10 @@
 // file through the mesher and the radiosity solver to the OSMesa picture, against a reviewed PNG
 // with the case's tolerances. WALKRAD_UPDATE_GOLDENS=1 writes the goldens instead.
 #include "app/gl/headless_render.h"
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
-#include "engine/load_scene.h"
-#include "engine/meshed_scene.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

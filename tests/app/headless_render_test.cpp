@@ -1,8 +1,8 @@
 // Headless renders through OSMesa, checked on pixels.
 #include "app/gl/headless_render.h"
 
-#include "engine/display_mesh.h"
-#include "engine/load_scene.h"
+#include "engine/document/display_mesh.h"
+#include "engine/io/load_scene.h"
 #include "tests/app/pixel_probe.h"
 
 #include <gtest/gtest.h>

@@ -3,9 +3,9 @@
 #include "app/gl/osmesa_context.h"
 #include "app/gl/scene_renderer.h"
 #include "app/view/view_camera.h"
-#include "engine/display_mesh.h"
-#include "engine/load_scene.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 
 #include <benchmark/benchmark.h>
 

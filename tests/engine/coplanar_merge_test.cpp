@@ -1,10 +1,10 @@
 // Coplanar merging of a scene file's faces (thesis 3.2), through the loader: touching faces of
 // one material in one plane become one surface, with every corner kept.
-#include "engine/coplanar_merge.h"
+#include "engine/geometry/coplanar_merge.h"
 
-#include "engine/load_scene.h"
-#include "engine/scene_loader.h"
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>

@@ -1,8 +1,8 @@
 // Coplanar merging of triangles (thesis 3.2 for modellers' meshes): whole walls from their
 // triangles, holes, T-junctions, boundaries touching themselves, curved parts left alone.
-#include "engine/coplanar_merge.h"
+#include "engine/geometry/coplanar_merge.h"
 
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

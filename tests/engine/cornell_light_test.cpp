@@ -4,8 +4,8 @@
 //   solver code, traces the scene's surfaces (polygons with holes, one-sided) and estimates the
 //   mean radiance leaving chosen elements; the converged solver must agree within 3%.
 // - Overshooting gives the same light in fewer shots.
-#include "engine/load_scene.h"
-#include "engine/meshed_scene.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 #include "radiosity/radiosity.h"
 #include "tests/radiosity/scenes.h"
 

@@ -1,6 +1,6 @@
-#include "engine/display_mesh.h"
+#include "engine/document/display_mesh.h"
 
-#include "engine/load_scene.h"
+#include "engine/io/load_scene.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>

@@ -1,12 +1,12 @@
 // The solver on its own thread: snapshots of the shared meshes' radiance, pause and restart.
-#include "engine/lighting.h"
+#include "engine/document/lighting.h"
 
-#include "engine/display_mesh.h"
-#include "engine/load_scene.h"
-#include "engine/mesh_adaptation.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/mesh_adaptation.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // What the loader makes of every feature of spec/scene-format.md.
-#include "engine/load_scene.h"
-#include "engine/solid_surfaces.h"
+#include "engine/geometry/solid_surfaces.h"
+#include "engine/io/load_scene.h"
 #include "radiosity/adaptive_refinement.h"
 #include "tests/engine/test_scenes.h"
 

@@ -1,8 +1,8 @@
 // Meshing one surface: a triangle that is already a good element stays one; a repeat of a
 // surface met before gets the mesh meshing it gives.
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
 
-#include "engine/load_scene.h"
+#include "engine/io/load_scene.h"
 
 #include <gtest/gtest.h>
 
