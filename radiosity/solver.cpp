@@ -209,7 +209,6 @@ struct Solver::State {
 
   double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
   Stats stats;
-  std::vector<ShotRecord> history;
 
   explicit State(const SolverSettings& s)
       : settings(s), renderer(pxpl5::HemisphereSettings{s.resolution, pxpl5::Projection::kHemisphere, s.graphicsProcessors}) {}
@@ -656,7 +655,6 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   }
   lightPatch(p, dB, sending);
   unshot[p] = -over;
-  history.push_back({p, dB});
   // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
   const glm::dvec3 escaped = distribute(p, frame, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
     receive(j, patchArea[p], dB, front, back);
@@ -918,7 +916,6 @@ void Solver::edit(std::span<const Surface> surfaces) {
   State& n = *now;
   n.build(surfaces);
   n.stats = old.stats;  // the ledgers go on; emission does not change
-  n.history = old.history;
   n.pixelShare = old.pixelShare;
 
   // Elements map by their corners (a moved surface: one by one, in order): they keep their light.
@@ -1554,10 +1551,6 @@ glm::dvec3 Solver::ambient() const {
   return ambientRadiance(lights);
 }
 
-std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, bool withAmbient) const {
-  return vertexRadiance(surface, withAmbient ? ambient() : glm::dvec3(0));
-}
-
 std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec3& ambientTerm) const {
   const State& st = *state_;
   const State::SurfaceData& s = st.surfaces.at(surface);
@@ -1577,7 +1570,6 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
 }
 
 const Stats& Solver::stats() const { return state_->stats; }
-std::span<const ShotRecord> Solver::shotHistory() const { return state_->history; }
 size_t Solver::surfaceCount() const { return state_->surfaces.size(); }
 size_t Solver::elementCount() const { return state_->receiver.size(); }
 size_t Solver::patchCount() const { return state_->unshot.size(); }

@@ -122,13 +122,6 @@ glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {
   return ambient;
 }
 
-DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambientOut) {
-  DisplayMesh mesh = displayMesh(meshScene(scene));
-  const glm::dvec3 ambient = shadeWithAmbient(scene, mesh);
-  if (ambientOut) *ambientOut = ambient;
-  return mesh;
-}
-
 double autoExposure(const DisplayMesh& mesh, double key) {
   double logSum = 0, areaSum = 0;
   for (size_t i = 0; i < mesh.positions.size(); ++i) {

@@ -52,10 +52,6 @@ void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& sur
 // radiance (the picture before any light is shot); returns that ambient radiance.
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh);
 
-// meshScene, displayMesh and shadeWithAmbient in one; the ambient radiance goes to `ambient`
-// when not null.
-DisplayMesh buildPlaceholderDisplay(const Scene& scene, glm::dvec3* ambient = nullptr);
-
 // An exposure that maps the area-weighted log-average luminance of the mesh to `key` (Reinhard
 // et al. 2002), so small bright emitters do not darken the picture. 1 for an empty mesh.
 double autoExposure(const DisplayMesh& mesh, double key = 0.25);

@@ -34,11 +34,6 @@ void applyEdit(std::unique_ptr<radiosity::Solver>& solver, const std::vector<rad
   else solver->edit(surfaces);
 }
 
-LightingThread::LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings)
-    : surfaces_(std::move(surfaces)), settings_(settings) {
-  start();
-}
-
 LightingThread::LightingThread(const Scene& scene, const MeshedScene& meshed, const LightingSettings& settings)
     : settings_(settings) {
   if (settings.adaptive) {

@@ -73,10 +73,9 @@ struct LightingSnapshot {
 
 class LightingThread {
  public:
-  // Starts shooting at once. Throws what radiosity::Solver throws for the surfaces.
-  LightingThread(std::vector<radiosity::Surface> surfaces, const LightingSettings& settings);
-  // The same for a meshed scene; with settings.adaptive its meshes are refined and coarsened as
-  // the light comes in, and the snapshots carry them.
+  // Starts shooting at once at a meshed scene (radiosityInput); with settings.adaptive its meshes
+  // are refined and coarsened as the light comes in, and the snapshots carry them. Throws what
+  // radiosity::Solver throws for the surfaces.
   LightingThread(const Scene& scene, const MeshedScene& meshed, const LightingSettings& settings);
   ~LightingThread();  // stops after the shot in flight
   LightingThread(const LightingThread&) = delete;
@@ -89,15 +88,15 @@ class LightingThread {
   // shows its light. Restarting throws the solution away and starts again from the emitters.
   void setPaused(bool paused);
   void restart();
-  // The scene changed (an object moved): `surfaces` replace the old ones, in the same order with
-  // the same meshes. Applied after the shot in flight; the snapshots count the edits applied.
-  // Not for a thread that adapts its meshes (it has its own): the overload below.
-  void edit(std::vector<radiosity::Surface> surfaces);
-  // The same for a thread made from a scene: `meshed` are the edited scene's meshes at their
-  // patch sizes; surfaces that did not change keep their refinement.
+  // The scene changed (an object moved): `meshed` are the edited scene's meshes at their patch
+  // sizes, the same surfaces in the same order; with adaptive refinement, surfaces that did not
+  // change keep their refinement. Applied after the shot in flight; the snapshots count the
+  // edits applied.
   void edit(const Scene& scene, const MeshedScene& meshed);
 
  private:
+  // Without adaptive refinement: the solver's input of the edited scene, for the thread to take.
+  void edit(std::vector<radiosity::Surface> surfaces);
   void start();
   void run(std::unique_ptr<radiosity::Solver> solver);
   void publish(const radiosity::Solver& solver, bool converged);

@@ -84,11 +84,6 @@ std::optional<std::pair<Vec3, Vec3>> axisPlaneAxes(const Vec3& n) {
   return std::nullopt;
 }
 
-SurfaceMesh meshSurface(const Surface& surface) {
-  mesher::Mesher mesher;
-  return meshSurface(surface, mesher);
-}
-
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher) {
   SurfaceMesh result;
   result.polygon = planePolygon(surface, surface);

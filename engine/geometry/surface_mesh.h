@@ -24,10 +24,9 @@ struct SurfaceMesh {
 std::optional<std::pair<Vec3, Vec3>> axisPlaneAxes(const Vec3& normal);
 
 // Plane coordinates are two world axes when the surface faces along one (exact coordinates,
-// axis-aligned edges stay axis-aligned), else axes along its longest outer edge.
-// The second form meshes with `mesher`, whose memory carries over from surface to surface.
-// Both throw mesher::MeshRefused for a surface the mesher refuses (meshRefusal says where).
-SurfaceMesh meshSurface(const Surface& surface);
+// axis-aligned edges stay axis-aligned), else axes along its longest outer edge. Meshes with
+// `mesher`, whose memory carries over from surface to surface. Throws mesher::MeshRefused for a
+// surface the mesher refuses (meshRefusal says where).
 SurfaceMesh meshSurface(const Surface& surface, mesher::Mesher& mesher);
 
 // The scene error for a polygon the mesher refused: MeshTooLarge or MeshTooFine, at `place`

@@ -40,7 +40,7 @@ TEST(Lighting, SnapshotsMatchASolveOnThisThreadShotForShot) {
   const DisplayMesh display = displayMesh(meshed);
   LightingSettings settings;
   settings.converge = 0.05;
-  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  LightingThread lighting(scene, meshed, settings);
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first, nullptr);
   EXPECT_EQ(first->radiance.size(), display.positions.size());
@@ -62,7 +62,7 @@ TEST(Lighting, PauseStopsShootingAndRestartStartsOver) {
   const MeshedScene meshed = meshScene(scene);
   LightingSettings settings;
   settings.converge = 1e-4;
-  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  LightingThread lighting(scene, meshed, settings);
   waitFor(lighting, [](const LightingSnapshot& s) { return s.shots >= 5; });
   lighting.setPaused(true);
   // The first paused snapshot comes once the shot in flight has landed, and shows it (with any
@@ -87,7 +87,7 @@ TEST(Lighting, APausedSnapshotShowsEveryShot) {
   LightingSettings settings;
   settings.converge = 1e-6;
   settings.publishSeconds = 1e9;  // no snapshot but the first, unless pausing makes one
-  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  LightingThread lighting(scene, meshed, settings);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_EQ(lighting.latest()->shots, 0u);
   lighting.setPaused(true);
@@ -208,7 +208,8 @@ TEST(Lighting, AdaptivePassesPassOverASurfaceTheMesherRefusesWhereItNowStands) {
   for (const Surface& s : editor.scene().surfaces)
     if (s.object == slab && s.normal.y > 0.5) top = &s;
   ASSERT_NE(top, nullptr);
-  EXPECT_THROW(meshSurface(*top), mesher::MeshRefused);  // the premise: refused where it stands
+  mesher::Mesher mesher;
+  EXPECT_THROW(meshSurface(*top, mesher), mesher::MeshRefused);  // the premise: refused where it stands
 
   lighting.edit(editor.scene(), editor.meshed());
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && (s.converged || !s.error.empty()); });
