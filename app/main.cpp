@@ -6,7 +6,8 @@
 #include "app/cli/render_command.h"
 #include "app/window/walk_window.h"
 #include "engine/diagnostics.h"
-#include "engine/scene_loader.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
 
 #include <CLI/CLI.hpp>
 

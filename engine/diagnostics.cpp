@@ -1,5 +1,8 @@
 #include "engine/diagnostics.h"
 
+#include <algorithm>
+#include <cctype>
+
 namespace engine {
 
 namespace {
@@ -33,5 +36,23 @@ SceneError::SceneError(Diag diag, std::string file, std::string place, std::stri
       diag_(diag),
       file_(std::move(file)),
       place_(std::move(place)) {}
+
+std::string child(const std::string& path, std::string_view key) {
+  const bool identifier = !key.empty() && !std::isdigit(static_cast<unsigned char>(key.front())) &&
+                          std::all_of(key.begin(), key.end(), [](char c) {
+                            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                          });
+  if (identifier) return path.empty() ? std::string(key) : path + "." + std::string(key);
+  std::string quoted;
+  for (char c : key) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    quoted += c;
+  }
+  return path + "[\"" + quoted + "\"]";
+}
+
+std::string child(const std::string& path, size_t index) {
+  return path + "[" + std::to_string(index) + "]";
+}
 
 }  // namespace engine

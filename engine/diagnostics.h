@@ -1,9 +1,11 @@
 // Every way a scene file (or a glTF model, the files it names, or its sidecar) can be refused, in one table, so tests check ids rather than wording.
 #pragma once
 
+#include <cstddef>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace engine {
 
@@ -75,5 +77,10 @@ class SceneError : public std::runtime_error {
   Diag diag_;
   std::string file_, place_;
 };
+
+// The place of a value in a JSON file, as a SceneError names it: child(path, "key") -> path.key
+// (or path["key"] when key is not an identifier), child(path, 3) -> path[3].
+std::string child(const std::string& path, std::string_view key);
+std::string child(const std::string& path, size_t index);
 
 }  // namespace engine

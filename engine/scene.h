@@ -3,7 +3,6 @@
 #pragma once
 
 #include "mesher/polygon.h"
-#include "radiosity/adaptive_refinement.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -12,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace engine {
@@ -80,7 +80,7 @@ struct Camera {
 struct Surface {
   Ring3 outer;               // counter-clockwise seen from the front
   std::vector<Ring3> holes;  // clockwise seen from the front
-  size_t contactHoles = 0;   // the last holes are footprints of faces resting on it (contact_cutouts.h)
+  size_t contactHoles = 0;   // the last holes are footprints of faces resting on it (geometry/contact_cutouts.h)
   Vec3 normal{0, 1, 0};      // unit, toward the front (the side that reflects and emits)
   double area = 0;           // outer minus holes
   uint32_t material = 0;     // index into Scene::materials
@@ -103,6 +103,13 @@ struct ImportCounts {
   size_t singles = 0;     // surfaces that are one triangle
 };
 
+// A scene file's settings.adaptive: adaptive refinement while solving (thesis 5.5;
+// document/mesh_adaptation.h), as radiosity::RefinementSettings takes it, with the same defaults.
+struct AdaptiveSettings {
+  double threshold = 0.25;    // the relative luminance jump across an edge that refines
+  double minElementSize = 0;  // the narrowest refined element, scene units; 0: a quarter of each surface's patch size
+};
+
 struct Scene {
   std::string file;  // as given to the loader, for messages
   std::string units = "m";
@@ -110,7 +117,7 @@ struct Scene {
   double patchSize = 0;  // settings.patch_size, or derived from the scene's size when absent
   // settings.adaptive (threshold, min_element_size): adaptive refinement while solving, on by
   // default for this scene; absent: off unless asked for (walkrad --adapt-threshold).
-  std::optional<radiosity::RefinementSettings> adaptive;
+  std::optional<AdaptiveSettings> adaptive;
   std::vector<Material> materials;
   std::vector<Object> objects;
   std::vector<Camera> cameras;
@@ -122,5 +129,11 @@ struct Scene {
   // Sets boundsMin and boundsMax from the surfaces (after loading, and after a move).
   void computeBounds();
 };
+
+// The largest side of the scene's bounding box (Scene::computeBounds), in scene units.
+double sceneExtent(const Scene& scene);
+
+// Metres per unit for a `units` value (m, cm, mm, in, ft), or 0 when unknown.
+double metersPerUnit(std::string_view units);
 
 }  // namespace engine

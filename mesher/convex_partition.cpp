@@ -1,7 +1,5 @@
 #include "mesher/convex_partition.h"
 
-#include "mesher/fast_atan2.h"
-
 #include <glm/geometric.hpp>
 
 #include <algorithm>

@@ -3,8 +3,12 @@
 // first is implied, no point repeated at the end.
 #pragma once
 
+#include "util/fast_atan2.h"
+
 #include <glm/vec2.hpp>
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace mesher {
@@ -15,6 +19,12 @@ using Ring2 = std::vector<Vec2>;
 // Twice the signed area of triangle (a, b, c): positive when counter-clockwise.
 inline double orient2(Vec2 a, Vec2 b, Vec2 c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// The angle at `at` between the directions to `prev` and `next`, in degrees.
+inline double cornerAngleDeg(Vec2 prev, Vec2 at, Vec2 next) {
+  const Vec2 u = prev - at, v = next - at;
+  return util::fastAtan2(std::abs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y) * (180 / std::numbers::pi);
 }
 
 // Signed area of a ring: positive when counter-clockwise.

@@ -514,12 +514,6 @@ Vec2 treePoint(const TreeFrame& frame, Vec2 plane) {
   return t + Vec2{0.0};
 }
 
-QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame) {
-  QuadtreeInput input;
-  quadtreeInput(polygon, frame, input);
-  return input;
-}
-
 void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, QuadtreeInput& input) {
   input.vertices.clear();
   input.edges.clear();
@@ -630,13 +624,6 @@ void splitInsideToUniformDepth(Quadtree& tree) {
 }
 
 }  // namespace
-
-std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap, int finestLevel) {
-  Quadtree tree;
-  tree.input = std::move(input);
-  if (!buildQuadtree(tree, maxDepth, depth, gridSnap, finestLevel)) return std::nullopt;
-  return tree;
-}
 
 bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap, int finestLevel) {
   // Deeper trees would lose exact quadrant corners, and overflow the walks' fixed stacks.

@@ -10,7 +10,6 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace mesher {
@@ -171,23 +170,20 @@ inline bool comesBefore(const Quadrant& a, const Quadrant& b) {
 // within frame.gridSnap of.
 Vec2 treePoint(const TreeFrame& frame, Vec2 plane);
 
-// Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`);
-// the second form fills `into`, reusing its memory.
-QuadtreeInput quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame);
+// Orients and numbers the polygon's rings into quadtree input (tree coordinates via `frame`) in
+// `into`, reusing its memory.
 void quadtreeInput(const PolygonWithHoles& polygon, const TreeFrame& frame, QuadtreeInput& into);
 
-// Stores every vertex and edge under the rules of 5.2: a leaf holds at most one distinct vertex
-// (in its closed square); with a vertex, only edges ending at it; without one, at most one edge.
-// No leaf inside the polygon or on its boundary is coarser than `depth`; leaves wholly outside
-// may be. Leaves holding edges are Boundary; every other leaf is Inside or Outside by its centre.
-// Returns nothing when two vertices cannot be separated within maxDepth levels, or within
-// `finestLevel` (when given, and finer than the uniform depth), as TreeFrame::finestLevel says
-// (the caller builds a deeper tree, or gives up: vertices are never merged).
-std::optional<Quadtree> buildQuadtree(QuadtreeInput input, int maxDepth, int depth, double gridSnap = 1e-6, int finestLevel = -1);
-// The same over `tree.input`, reusing the tree's memory; false where the first form gives nothing.
-// Both throw std::invalid_argument for a maxDepth above kDeepestTree (or depth outside 0..maxDepth),
-// and MeshRefused when the polygon's area alone needs more quadrants at `depth` than the tree's
-// budget leaves, or when making them reaches it.
+// Stores every vertex and edge of `tree.input` under the rules of 5.2, reusing the tree's memory:
+// a leaf holds at most one distinct vertex (in its closed square); with a vertex, only edges
+// ending at it; without one, at most one edge. No leaf inside the polygon or on its boundary is
+// coarser than `depth`; leaves wholly outside may be. Leaves holding edges are Boundary; every
+// other leaf is Inside or Outside by its centre. Returns false when two vertices cannot be
+// separated within maxDepth levels, or within `finestLevel` (when given, and finer than the
+// uniform depth), as TreeFrame::finestLevel says (the caller builds a deeper tree, or gives up:
+// vertices are never merged). Throws std::invalid_argument for a maxDepth above kDeepestTree (or
+// depth outside 0..maxDepth), and MeshRefused when the polygon's area alone needs more quadrants
+// at `depth` than the tree's budget leaves, or when making them reaches it.
 bool buildQuadtree(Quadtree& tree, int maxDepth, int depth, double gridSnap, int finestLevel = -1);
 
 // A polygon's tree for a patch size: the frame of 5.1, the depth of 5.2, and a maximum depth

@@ -300,8 +300,6 @@ size_t QualityRefiner::splitShortLeaves(const std::vector<int32_t>& leaves) {
   return splits;
 }
 
-size_t refineForQuality(PolygonTree& built) { return QualityRefiner(built).refine(); }
-
 void buildMeshTree(const PolygonWithHoles& polygon, double patchSize, PolygonTree& into,
                    std::optional<QualityRefiner>& refiner, int setUpDepth) {
   // A vertex leaf that could not be split far enough, the tree being as deep as it goes, gets a

@@ -73,9 +73,6 @@ class QualityRefiner {
   bool shortAtDeepestLevel_ = false;
 };
 
-// QualityRefiner(built).refine().
-size_t refineForQuality(PolygonTree& built);
-
 // A polygon's tree as the mesher meshes it, built into `into` (its memory reused):
 // buildPolygonTree, balance, the quality splits (all again in a deeper tree when a vertex leaf
 // ran out of depth), and no changes left recorded. `refiner` is

@@ -1,6 +1,5 @@
 #include "mesher/subdomain_removal.h"
 
-#include "mesher/fast_atan2.h"
 #include "mesher/triangulate.h"
 
 #include <glm/common.hpp>

@@ -1,6 +1,6 @@
 #include "radiosity/form_factors.h"
 
-#include "mesher/fast_atan2.h"
+#include "util/fast_atan2.h"
 
 #include <glm/geometric.hpp>
 
@@ -120,7 +120,7 @@ double contourSumReference(const glm::dvec3* v, int m, const glm::dvec3& normal)
     const double s = glm::length(c);
     if (s == 0) continue;
     // The polynomial atan2 (2e-8 radians): this sum runs for most receivers of every shot.
-    sum += mesher::fastAtan2(s, glm::dot(a, b)) * glm::dot(normal, c) / s;
+    sum += util::fastAtan2(s, glm::dot(a, b)) * glm::dot(normal, c) / s;
   }
   return sum;
 }
@@ -158,13 +158,13 @@ bool hasAvx2() {
   const __m256d nc = _mm256_add_pd(
       _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(normal.x), cx), _mm256_mul_pd(_mm256_set1_pd(normal.y), cy)),
       _mm256_mul_pd(_mm256_set1_pd(normal.z), cz));
-  // mesher::fastAtan2(s, x) for s >= 0: z is the smaller of s and |x| over the larger.
+  // util::fastAtan2(s, x) for s >= 0: z is the smaller of s and |x| over the larger.
   const __m256d zeroes = _mm256_setzero_pd();
   const __m256d absX = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
   const __m256d steep = _mm256_cmp_pd(s, absX, _CMP_GT_OQ);
   const __m256d z = _mm256_div_pd(_mm256_blendv_pd(s, absX, steep), _mm256_blendv_pd(absX, s, steep));
   const __m256d z2 = _mm256_mul_pd(z, z);
-  const double* c = mesher::kFastAtanCoefficients;
+  const double* c = util::kFastAtanCoefficients;
   __m256d inner = _mm256_mul_pd(z2, _mm256_set1_pd(c[7]));
   for (int k = 6; k >= 0; --k) inner = _mm256_mul_pd(z2, _mm256_add_pd(_mm256_set1_pd(c[k]), inner));
   const __m256d atanZ = _mm256_mul_pd(z, _mm256_add_pd(_mm256_set1_pd(1.0), inner));

@@ -132,12 +132,6 @@ struct Shooter {
   glm::dvec3 unshotPower{0};       // pi x unshot radiance x patch area
 };
 
-// One shot, kept so later work can gather from what has been shot or re-shoot a difference.
-struct ShotRecord {
-  uint32_t patch = 0;
-  glm::dvec3 radiance{0};          // radiance that was shot: the unshot, plus any overshoot
-};
-
 class Solver {
  public:
   // Copies the surfaces' geometry and materials; each element starts at its emission, each
@@ -188,12 +182,10 @@ class Solver {
   glm::dvec3 ambient() const;
 
   // Per vertex of `surface`: the area-weighted mean radiance of the elements of that surface
-  // around it (thesis 2.4), so Gouraud shading is continuous within a surface. With
-  // `withAmbient`, reflectance x ambient() is added (the display's estimate before
-  // convergence). Vertices used by no element get 0.
-  std::vector<glm::dvec3> vertexRadiance(uint32_t surface, bool withAmbient) const;
-  // The same with reflectance x `ambient` added (ambient() computed once for many surfaces: it
-  // looks at every patch).
+  // around it (thesis 2.4), so Gouraud shading is continuous within a surface, plus reflectance x
+  // `ambient` (ambient() for the display's estimate before convergence, computed once for many
+  // surfaces: it looks at every patch; 0 for the radiance alone). Vertices used by no element
+  // get 0.
   std::vector<glm::dvec3> vertexRadiance(uint32_t surface, const glm::dvec3& ambient) const;
 
   // An edit of the scene (objects moved, surfaces meshed again or refined): each change replaces
@@ -215,7 +207,6 @@ class Solver {
   size_t pendingCorrections() const;
 
   const Stats& stats() const;
-  std::span<const ShotRecord> shotHistory() const;
   size_t surfaceCount() const;
   size_t elementCount() const;
   size_t patchCount() const;

@@ -213,7 +213,6 @@ struct Solver::State {
 
   double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
   Stats stats;
-  std::vector<ShotRecord> history;
 
   explicit State(const SolverSettings& s)
       : settings(s), renderer(pxpl5::HemisphereSettings{s.resolution, pxpl5::Projection::kHemisphere, s.graphicsProcessors}) {}
@@ -688,7 +687,6 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   }
   lightPatch(p, dB, sending);
   unshot[p] = -over;
-  history.push_back({p, dB});
   // Deposit: reflected light becomes radiance and unshot light; the rest is absorbed.
   const glm::dvec3 escaped = distribute(p, frame, [&](uint32_t j, const glm::dvec3& front, const glm::dvec3& back) {
     receive(j, patchArea[p], dB, front, back);
@@ -957,7 +955,6 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
   n.build(given, &old);
   n.stats = old.stats;  // the ledgers go on; emission does not change
   n.stats.editedSurfaces += changes.size();
-  n.history = old.history;
   n.pixelShare = old.pixelShare;
 
   // Elements go on by their keys (on a surface no change named: all of them, as they were):
@@ -1599,10 +1596,6 @@ glm::dvec3 Solver::ambient() const {
   return ambientRadiance(lights);
 }
 
-std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, bool withAmbient) const {
-  return vertexRadiance(surface, withAmbient ? ambient() : glm::dvec3(0));
-}
-
 std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec3& ambientTerm) const {
   const State& st = *state_;
   const State::SurfaceData& s = st.surfaces.at(surface);
@@ -1622,7 +1615,6 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
 }
 
 const Stats& Solver::stats() const { return state_->stats; }
-std::span<const ShotRecord> Solver::shotHistory() const { return state_->history; }
 size_t Solver::surfaceCount() const { return state_->surfaces.size(); }
 size_t Solver::elementCount() const { return state_->receiver.size(); }
 size_t Solver::patchCount() const { return state_->unshot.size(); }

@@ -2,9 +2,9 @@
 
 namespace app {
 
-std::optional<radiosity::RefinementSettings> adaptiveSettings(const AdaptOptions& options, const engine::Scene& scene) {
+std::optional<engine::AdaptiveSettings> adaptiveSettings(const AdaptOptions& options, const engine::Scene& scene) {
   if (options.off || (!scene.adaptive && !options.threshold && !options.minElementSize)) return std::nullopt;
-  radiosity::RefinementSettings settings = scene.adaptive.value_or(radiosity::RefinementSettings{});
+  engine::AdaptiveSettings settings = scene.adaptive.value_or(engine::AdaptiveSettings{});
   if (options.threshold) settings.threshold = *options.threshold;
   if (options.minElementSize) settings.minElementSize = *options.minElementSize;
   return settings;

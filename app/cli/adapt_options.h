@@ -4,7 +4,6 @@
 #pragma once
 
 #include "engine/scene.h"
-#include "radiosity/adaptive_refinement.h"
 
 #include <optional>
 
@@ -17,6 +16,6 @@ struct AdaptOptions {
 };
 
 // The refinement to run while solving `scene`, or none.
-std::optional<radiosity::RefinementSettings> adaptiveSettings(const AdaptOptions& options, const engine::Scene& scene);
+std::optional<engine::AdaptiveSettings> adaptiveSettings(const AdaptOptions& options, const engine::Scene& scene);
 
 }  // namespace app

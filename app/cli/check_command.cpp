@@ -1,8 +1,8 @@
 #include "app/cli/check_command.h"
 
 #include "app/image/atomic_file.h"
-#include "engine/model_check.h"
-#include "engine/scene_loader.h"
+#include "engine/geometry/model_check.h"
+#include "engine/io/load_scene.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
-// `walkrad check`: lists what is wrong with a model for lighting (engine/model_check.h), with
+// `walkrad check`: lists what is wrong with a model for lighting (engine/geometry/model_check.h), with
 // where it is and what walkrad does about it.
 #pragma once
 
-#include "engine/scene_loader.h"
+#include "engine/io/load_scene.h"
 
 #include <string>
 

@@ -1,10 +1,10 @@
 #include "app/cli/export_command.h"
 
 #include "app/image/atomic_file.h"
-#include "engine/display_mesh.h"
-#include "engine/gltf_export.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/gltf_export.h"
+#include "engine/document/lighting.h"
+#include "engine/geometry/meshed_scene.h"
 
 #include <chrono>
 #include <iostream>

@@ -1,5 +1,5 @@
 // `walkrad export`: the meshed, solved scene as glTF with its light baked into vertex colours
-// (engine/gltf_export.h), for Blender or any glTF viewer.
+// (engine/document/gltf_export.h), for Blender or any glTF viewer.
 #pragma once
 
 #include "app/cli/scene_solve.h"

@@ -1,7 +1,7 @@
 // `walkrad mesh`: meshes a scene or one polygon case and reports on the mesh (spec/cli.md).
 #pragma once
 
-#include "engine/scene_loader.h"
+#include "engine/io/load_scene.h"
 
 #include <optional>
 #include <string>

@@ -1,16 +1,16 @@
 #include "app/cli/render_command.h"
 
-#include "app/gl/headless_render.h"
 #include "app/cli/import_stats.h"
 #include "app/cli/peak_memory.h"
+#include "app/gl/headless_render.h"
 #include "app/image/atomic_file.h"
 #include "app/view/view_camera.h"
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
-#include "engine/mesh_adaptation.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
+#include "engine/document/mesh_adaptation.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_limits.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,6 @@
 #pragma once
 
 #include "app/cli/scene_solve.h"
-#include "engine/scene_loader.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,8 +1,9 @@
 #include "app/cli/scene_solve.h"
 
 #include "app/image/atomic_file.h"
-#include "engine/lighting.h"
-#include "engine/scene_loader.h"
+#include "engine/document/lighting.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
 
 #include <iostream>
 

@@ -3,10 +3,10 @@
 #pragma once
 
 #include "app/cli/adapt_options.h"
-#include "engine/mesh_adaptation.h"
-#include "engine/meshed_scene.h"
+#include "engine/document/mesh_adaptation.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 #include "engine/scene.h"
-#include "engine/scene_loader.h"
 #include "radiosity/radiosity.h"
 
 #include <chrono>

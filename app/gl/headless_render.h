@@ -4,7 +4,7 @@
 #include "app/gl/scene_renderer.h"
 #include "app/image/image.h"
 #include "app/view/view_camera.h"
-#include "engine/display_mesh.h"
+#include "engine/document/display_mesh.h"
 #include "engine/scene.h"
 
 namespace app {

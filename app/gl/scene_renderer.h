@@ -5,7 +5,7 @@
 
 #include "app/gl/gl_program.h"
 #include "app/image/image.h"
-#include "engine/display_mesh.h"
+#include "engine/document/display_mesh.h"
 
 #include <glm/mat4x4.hpp>
 

@@ -23,9 +23,4 @@ void writePng(const std::string& path, const ImageRgb8& image);
 // Standard PFM: "PF", little-endian (negative scale), rows stored bottom row first.
 void writePfm(const std::string& path, const ImageRgbF& image);
 
-// Reads a PNG as RGB8; throws std::runtime_error naming the path when it cannot.
-ImageRgb8 readPng(const std::string& path);
-// Reads a PFM written by writePfm (or any little-endian RGB PFM).
-ImageRgbF readPfm(const std::string& path);
-
 }  // namespace app

@@ -1,6 +1,6 @@
 #include "app/window/object_drag.h"
 
-#include "engine/pick.h"
+#include "engine/geometry/pick.h"
 
 #include <cmath>
 

@@ -5,8 +5,8 @@
 // the vertical through the object's origin.
 #pragma once
 
-#include "engine/edit_history.h"
-#include "engine/scene_editor.h"
+#include "engine/document/edit_history.h"
+#include "engine/document/scene_editor.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,10 +1,10 @@
 #include "app/window/scene_edits.h"
 
 #include "app/image/atomic_file.h"
-#include "engine/gltf_loader.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
-#include "engine/scene_saver.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/gltf_loader.h"
+#include "engine/io/scene_loader.h"
+#include "engine/io/scene_saver.h"
 
 #include <exception>
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "app/window/object_drag.h"
-#include "engine/edit_history.h"
-#include "engine/scene_editor.h"
+#include "engine/document/edit_history.h"
+#include "engine/document/scene_editor.h"
 
 #include <optional>
 #include <string>

@@ -2,8 +2,8 @@
 // its viewpoints, and the display settings.
 #pragma once
 
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
 #include "engine/scene.h"
 
 #include <glm/vec3.hpp>

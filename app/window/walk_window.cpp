@@ -17,11 +17,14 @@
 #include "app/window/scene_panel.h"
 #include "app/window/walk_controls.h"
 #include "engine/diagnostics.h"
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
-#include "engine/gltf_loader.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/gltf_loader.h"
+#include "engine/io/input_file.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 
 #include <nlohmann/json.hpp>
 

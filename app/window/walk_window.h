@@ -2,8 +2,8 @@
 #pragma once
 
 #include "app/cli/adapt_options.h"
-#include "engine/lighting.h"
-#include "engine/scene_loader.h"
+#include "engine/document/lighting.h"
+#include "engine/io/load_scene.h"
 
 #include <optional>
 #include <string>

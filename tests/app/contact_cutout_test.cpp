@@ -4,9 +4,9 @@
 // With the box's footprint cut out of the floor, the floor's elements end at the box, and the
 // picture comes much closer to a finely meshed solution.
 #include "app/gl/headless_render.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 #include "tests/app/solved_display.h"
 
 #include <gtest/gtest.h>

@@ -2,10 +2,11 @@
 // gives it light, tests/app/sidecars/) draws a picture that is neither empty nor black, and the
 // Cornell box written as glTF gives the same solved picture as assets/cornell.json.
 #include "app/gl/headless_render.h"
-#include "engine/display_mesh.h"
-#include "engine/gltf_loader.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/gltf_loader.h"
+#include "engine/io/load_scene.h"
 #include "tests/app/pixel_probe.h"
 #include "tests/app/solved_display.h"
 #include "tests/engine/gltf_writer.h"

@@ -2,10 +2,11 @@
 // file through the mesher and the radiosity solver to the OSMesa picture, against a reviewed PNG
 // with the case's tolerances. WALKRAD_UPDATE_GOLDENS=1 writes the goldens instead.
 #include "app/gl/headless_render.h"
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
+#include "tests/app/image_read.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -61,7 +62,7 @@ TEST_P(Golden, SolvedImageMatchesTheGolden) {
     GTEST_SKIP() << "wrote " << golden;
   }
   writePng(std::string(WALKRAD_TEST_OUTPUT) + "/golden-" + c.name + "-actual.png", image);
-  const ImageRgb8 expected = readPng(golden);
+  const ImageRgb8 expected = test::readPng(golden);
   ASSERT_EQ(image.width, expected.width);
   ASSERT_EQ(image.height, expected.height);
 

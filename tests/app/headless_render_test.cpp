@@ -1,8 +1,8 @@
 // Headless renders through OSMesa, checked on pixels.
 #include "app/gl/headless_render.h"
 
-#include "engine/display_mesh.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/io/load_scene.h"
 #include "tests/app/pixel_probe.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,8 @@ namespace {
 engine::Scene loadAsset(const char* name) { return engine::loadScene(std::string(WALKRAD_ASSETS) + "/" + name); }
 
 HeadlessImages render(const engine::Scene& scene, int width, int height, bool wireframe = false, bool linear = false) {
-  const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+  engine::DisplayMesh mesh = engine::displayMesh(engine::meshScene(scene));
+  engine::shadeWithAmbient(scene, mesh);
   ViewCamera camera;
   EXPECT_TRUE(chooseCamera(scene, "", camera));
   return renderHeadless(scene, mesh, camera, width, height, static_cast<float>(engine::autoExposure(mesh)), wireframe, linear);

@@ -1,5 +1,6 @@
 #include "app/image/atomic_file.h"
 #include "app/image/image.h"
+#include "tests/app/image_read.h"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +28,7 @@ std::string readAll(const std::string& path) {
 TEST(ImageIo, PngRoundTrip) {
   ImageRgb8 image{3, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30, 40, 50, 60, 70, 80, 90}};
   writePng(kDir + "/roundtrip.png", image);
-  const ImageRgb8 back = readPng(kDir + "/roundtrip.png");
+  const ImageRgb8 back = test::readPng(kDir + "/roundtrip.png");
   EXPECT_EQ(back.width, 3);
   EXPECT_EQ(back.height, 2);
   EXPECT_EQ(back.pixels, image.pixels);
@@ -43,7 +44,7 @@ TEST(ImageIo, PfmStoresTheBottomRowFirst) {
   float first = 0;
   std::memcpy(&first, bytes.data() + std::string("PF\n2 2\n-1.0\n").size(), sizeof first);
   EXPECT_EQ(first, 7);
-  EXPECT_EQ(readPfm(path).pixels, image.pixels);
+  EXPECT_EQ(test::readPfm(path).pixels, image.pixels);
 }
 
 TEST(ImageIo, RenamingOntoADirectoryFailsCleanly) {
@@ -90,8 +91,8 @@ TEST(ImageIo, ALinkOrAPipeIsWrittenThroughNotReplaced) {
 
 TEST(ImageIo, ReadingGarbageThrows) {
   writeFileAtomically(kDir + "/garbage.png", "not a png");
-  EXPECT_THROW(readPng(kDir + "/garbage.png"), std::runtime_error);
-  EXPECT_THROW(readPfm(kDir + "/garbage.png"), std::runtime_error);
+  EXPECT_THROW(test::readPng(kDir + "/garbage.png"), std::runtime_error);
+  EXPECT_THROW(test::readPfm(kDir + "/garbage.png"), std::runtime_error);
 }
 
 }  // namespace

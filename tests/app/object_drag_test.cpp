@@ -2,7 +2,10 @@
 #include "app/view/view_camera.h"
 #include "app/window/object_drag.h"
 #include "app/window/scene_edits.h"
-#include "engine/scene_loader.h"
+#include "engine/io/input_file.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 #include "tests/app/file_size_limit.h"
 
 #include <glm/geometric.hpp>

@@ -1,9 +1,9 @@
 // The solved light on the display mesh, for tests that check pictures of a solution.
 #pragma once
 
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
+#include "engine/geometry/meshed_scene.h"
 
 #include <cstdint>
 

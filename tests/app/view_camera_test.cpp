@@ -1,8 +1,6 @@
 // The camera conventions of spec/scene-format.md (CAMERA).
 #include "app/view/view_camera.h"
 
-#include "engine/scene_loader.h"
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>

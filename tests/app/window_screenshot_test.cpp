@@ -1,6 +1,7 @@
 // Checks the screenshot that the window test took under Xvfb: the Cornell box as the headless
 // render shows it, and the ImGui panel drawn over it.
 #include "app/image/image.h"
+#include "tests/app/image_read.h"
 #include "tests/app/pixel_probe.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,7 @@ namespace {
 TEST(WindowScreenshot, ShowsTheCornellBoxAndThePanel) {
   const char* path = std::getenv("WALKRAD_WINDOW_PNG");
   ASSERT_NE(path, nullptr);
-  const ImageRgb8 image = readPng(path);
+  const ImageRgb8 image = test::readPng(path);
   ASSERT_EQ(image.width, 1280);
   ASSERT_EQ(image.height, 720);
   // 16:9 with a 39.3 degree vertical field: the side walls span 23-33% and 67-77% of the width;

@@ -1,7 +1,7 @@
 // Speed of the modified quadtree mesher (thesis chapter 5, figure 6.1).
 // Run: build/tests/walkrad_bench --benchmark_filter=mesh (figures in docs/BENCHMARKS.md).
-#include "engine/scene_loader.h"
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
+#include "engine/io/load_scene.h"
 #include "mesher/adaptive_mesh.h"
 #include "mesher/mesher.h"
 

@@ -3,8 +3,8 @@
 #include "app/gl/osmesa_context.h"
 #include "app/gl/scene_renderer.h"
 #include "app/view/view_camera.h"
-#include "engine/display_mesh.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/io/scene_loader.h"
 
 #include <benchmark/benchmark.h>
 
@@ -43,7 +43,8 @@ void placeholderDisplay(benchmark::State& state) {
   const engine::Scene scene = engine::parseScene(assetText(name), name);
   size_t triangles = 0;
   for (auto _ : state) {
-    const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+    engine::DisplayMesh mesh = engine::displayMesh(engine::meshScene(scene));
+    engine::shadeWithAmbient(scene, mesh);
     triangles = mesh.triangleCount();
     benchmark::DoNotOptimize(mesh.triangles.data());
   }
@@ -57,7 +58,8 @@ void headlessFrame(benchmark::State& state) {
   const char* name = kScenes[state.range(0)];
   const int width = 640, height = 480;
   const engine::Scene scene = engine::parseScene(assetText(name), name);
-  const engine::DisplayMesh mesh = engine::buildPlaceholderDisplay(scene);
+  engine::DisplayMesh mesh = engine::displayMesh(engine::meshScene(scene));
+  engine::shadeWithAmbient(scene, mesh);
   const app::OsmesaContext context(width, height);
   if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&app::OsmesaContext::procAddress)))
     throw std::runtime_error("no GL");

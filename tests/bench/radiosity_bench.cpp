@@ -2,8 +2,8 @@
 // second for shipped scenes meshed at their patch sizes, shooting patches twice that across,
 // with one and two pxpl5 graphics processors. Meshing is outside the timing.
 // Run: build/tests/walkrad_bench --benchmark_filter=radiosity
-#include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 #include "radiosity/radiosity.h"
 
 #include <benchmark/benchmark.h>

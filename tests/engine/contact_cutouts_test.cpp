@@ -1,7 +1,7 @@
 // Contact cut-outs at any finite offset: a plane's cell index stays a defined integer however far
 // the plane lies or however small the tolerance (UBSan once found a double-to-int64 overflow when
 // `--move` took a box to 1e308).
-#include "engine/contact_cutouts.h"
+#include "engine/geometry/contact_cutouts.h"
 
 #include <gtest/gtest.h>
 

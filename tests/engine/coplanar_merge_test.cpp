@@ -1,9 +1,10 @@
 // Coplanar merging of a scene file's faces (thesis 3.2), through the loader: touching faces of
 // one material in one plane become one surface, with every corner kept.
-#include "engine/coplanar_merge.h"
+#include "engine/geometry/coplanar_merge.h"
 
-#include "engine/scene_loader.h"
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>
@@ -165,7 +166,8 @@ TEST(CoplanarMerge, AFacesHoleIsKeptInTheMergedSurface) {
   EXPECT_EQ(tops[0]->holes[0].size(), 4u);
   EXPECT_TRUE(hasCorner(tops[0]->holes[0], {0.5, 1, 0.5}));
   EXPECT_DOUBLE_EQ(tops[0]->area, 6 - 1);
-  ASSERT_NO_THROW(meshSurface(*tops[0]));
+  mesher::Mesher mesher;
+  ASSERT_NO_THROW(meshSurface(*tops[0], mesher));
 }
 
 TEST(CoplanarMerge, DifferentMaterialsStayApart) {
@@ -272,7 +274,10 @@ TEST(CoplanarMerge, ShippedScenesHaveNoTVerticesBetweenMergeableSurfaces) {
     for (const auto& [key, members] : groups) {
       if (members.size() < 2) continue;
       std::vector<SurfaceMesh> meshes;
-      for (size_t m : members) meshes.push_back(meshSurface(scene.surfaces[m]));
+      for (size_t m : members) {
+        mesher::Mesher mesher;
+        meshes.push_back(meshSurface(scene.surfaces[m], mesher));
+      }
       for (size_t a = 0; a < meshes.size(); ++a)
         for (size_t b = 0; b < meshes.size(); ++b) {
           if (a == b) continue;

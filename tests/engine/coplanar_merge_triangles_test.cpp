@@ -1,8 +1,8 @@
 // Coplanar merging of triangles (thesis 3.2 for modellers' meshes): whole walls from their
 // triangles, holes, T-junctions, boundaries touching themselves, curved parts left alone.
-#include "engine/coplanar_merge.h"
+#include "engine/geometry/coplanar_merge.h"
 
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -50,7 +50,8 @@ void expectMeshable(const std::vector<Surface>& surfaces) {
   for (Surface s : surfaces) {
     s.patchSize = 0.5;  // the merge leaves patch sizes to the loader
     SurfaceMesh mesh;
-    ASSERT_NO_THROW(mesh = meshSurface(s)) << s.face;
+    mesher::Mesher mesher;
+    ASSERT_NO_THROW(mesh = meshSurface(s, mesher)) << s.face;
     double ring = mesher::signedArea(mesh.polygon.outer);
     for (const auto& h : mesh.polygon.holes) ring += mesher::signedArea(h);
     EXPECT_NEAR(ring, s.area, 1e-9 * std::max(1.0, s.area)) << s.face;

@@ -1,7 +1,7 @@
-#include "engine/display_mesh.h"
+#include "engine/document/display_mesh.h"
 
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
+#include "engine/document/scene_editor.h"
+#include "engine/io/load_scene.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>
@@ -16,7 +16,7 @@ TEST(DisplayMesh, TrianglesTileEverySurface) {
   for (const char* name : {"cornell.json", "office.json", "kitchen.json", "furnace.json"}) {
     SCOPED_TRACE(name);
     const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/" + name);
-    const DisplayMesh mesh = buildPlaceholderDisplay(scene);
+    const DisplayMesh mesh = displayMesh(meshScene(scene));
     ASSERT_EQ(mesh.surfaceVertexStart.size(), scene.surfaces.size() + 1);
     std::vector<double> areaOf(scene.surfaces.size(), 0);
     std::vector<uint32_t> surfaceOf(mesh.positions.size());
@@ -57,7 +57,7 @@ TEST(DisplayMesh, ElementsAreNoLargerThanThePatchSize) {
   Json j = test::sceneWithSolid({{"profile", {{0, 0}, {3, 0}, {3, 1.2}, {0, 1.2}}}, {"from", 0}, {"to", 2}, {"material", "white"}});
   j["settings"]["patch_size"] = 0.4;
   const Scene scene = test::parse(j);
-  const DisplayMesh mesh = buildPlaceholderDisplay(scene);
+  const DisplayMesh mesh = displayMesh(meshScene(scene));
   for (size_t e = 0; e < mesh.edges.size(); e += 2) {
     const glm::vec3 d = mesh.positions[mesh.edges[e + 1]] - mesh.positions[mesh.edges[e]];
     EXPECT_LE(std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}), 0.4f + 1e-6f);
@@ -66,8 +66,8 @@ TEST(DisplayMesh, ElementsAreNoLargerThanThePatchSize) {
 
 TEST(DisplayMesh, PlaceholderShadingIsEmissionPlusReflectedAmbient) {
   const Scene scene = test::parse(test::baseScene());
-  glm::dvec3 ambient{0};
-  const DisplayMesh mesh = buildPlaceholderDisplay(scene, &ambient);
+  DisplayMesh mesh = displayMesh(meshScene(scene));
+  const glm::dvec3 ambient = shadeWithAmbient(scene, mesh);
   EXPECT_GT(ambient.x, 0);
   // Lamp: emission 4 + 0.5 ambient; walls: 0.5 ambient.
   float brightest = 0, darkest = 1e9f;
@@ -79,7 +79,7 @@ TEST(DisplayMesh, PlaceholderShadingIsEmissionPlusReflectedAmbient) {
 TEST(DisplayMesh, QuadsAreTwoTrianglesAndEachEdgeIsDrawnOnce) {
   const Scene scene = test::parse(test::sceneWithSolid(
       {{"profile", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, {"from", 0}, {"to", 1}, {"material", "white"}}));
-  const DisplayMesh mesh = buildPlaceholderDisplay(scene);
+  const DisplayMesh mesh = displayMesh(meshScene(scene));
   // Patch size 0.5: each face of the unit cube is 2 x 2 quads with 12 edges.
   EXPECT_EQ(mesh.elements, 6u * 4);
   EXPECT_EQ(mesh.quads, 6u * 4);

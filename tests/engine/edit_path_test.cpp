@@ -1,10 +1,10 @@
 // The edit path's contract on real scenes: a move changes only the surfaces whose light it
 // changes, and moving an object and moving it back gives the solution of the unmoved scene.
-#include "engine/display_mesh.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/lighting.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Real models made by others (../shared/scenes-external/, README there): what the import finds,
 // checked against counts read independently from each file's JSON, and how far the coplanar
 // merge reduces walls and floors. Skipped where the models are not present.
-#include "engine/gltf_loader.h"
+#include "engine/io/gltf_loader.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

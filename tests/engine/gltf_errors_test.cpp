@@ -1,9 +1,11 @@
 // Broken glTF models and sidecars are refused with one located diagnostic, never a crash: bad
 // references, accessors past their buffers, loops, and every truncation of a small file.
-#include "engine/gltf_loader.h"
+#include "engine/io/gltf_loader.h"
 
 #include "engine/diagnostics.h"
-#include "engine/gltf_sidecar.h"
+#include "engine/io/gltf_sidecar.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
 #include "tests/engine/gltf_writer.h"
 #include "tests/engine/hostile_input.h"
 

@@ -1,11 +1,11 @@
 // The glTF export read back by an independent reader (tinygltf) with every section required:
 // the same triangles and areas per object, the baked colours, and what glTF requires of the
 // file (accessor bounds, alignment, unlit materials).
-#include "engine/gltf_export.h"
-#include "engine/gltf_loader.h"
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
+#include "engine/document/gltf_export.h"
+#include "engine/document/lighting.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/gltf_loader.h"
+#include "engine/io/load_scene.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

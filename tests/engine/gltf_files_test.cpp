@@ -1,9 +1,9 @@
 // The files a glTF model names are read only from the model's folder, only when they are regular
 // files of the size the model declares: every other URI is refused, naming it and saying why,
 // in .gltf and .glb alike, for buffers and images.
-#include "engine/gltf_loader.h"
+#include "engine/io/gltf_loader.h"
 
-#include "engine/input_file.h"
+#include "engine/io/input_file.h"
 #include "tests/engine/hostile_input.h"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // glTF import: component types, primitive modes, the node tree and its transforms, materials,
 // cameras and the sidecar, on models written by the test writer.
-#include "engine/gltf_loader.h"
+#include "engine/io/gltf_loader.h"
 
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
 
 #include "tests/engine/gltf_writer.h"
 

@@ -1,6 +1,6 @@
 #include "tests/engine/gltf_writer.h"
 
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -1,10 +1,10 @@
 // Input files a stranger could send (scenes, sidecars, polygon cases, glTF models) are read only
 // when they are regular files of a bounded size: a FIFO, a device or a folder is refused at once,
 // never read or waited on.
-#include "engine/input_file.h"
+#include "engine/io/input_file.h"
 
-#include "engine/gltf_loader.h"
-#include "engine/scene_loader.h"
+#include "engine/io/gltf_loader.h"
+#include "engine/io/load_scene.h"
 #include "tests/engine/hostile_input.h"
 
 #include <gtest/gtest.h>

@@ -1,11 +1,12 @@
 // The solver on its own thread: snapshots of the shared meshes' radiance, pause and restart.
-#include "engine/lighting.h"
+#include "engine/document/lighting.h"
 
-#include "engine/display_mesh.h"
-#include "engine/mesh_adaptation.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
+#include "engine/document/display_mesh.h"
+#include "engine/document/mesh_adaptation.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +40,7 @@ TEST(Lighting, SnapshotsMatchASolveOnThisThreadShotForShot) {
   const DisplayMesh display = displayMesh(meshed);
   LightingSettings settings;
   settings.converge = 0.05;
-  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  LightingThread lighting(scene, meshed, settings);
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first, nullptr);
   EXPECT_EQ(first->radiance.size(), display.positions.size());
@@ -61,7 +62,7 @@ TEST(Lighting, PauseStopsShootingAndRestartStartsOver) {
   const MeshedScene meshed = meshScene(scene);
   LightingSettings settings;
   settings.converge = 1e-4;
-  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  LightingThread lighting(scene, meshed, settings);
   waitFor(lighting, [](const LightingSnapshot& s) { return s.shots >= 5; });
   lighting.setPaused(true);
   // The first paused snapshot comes once the shot in flight has landed, and shows it (with any
@@ -86,7 +87,7 @@ TEST(Lighting, APausedSnapshotShowsEveryShot) {
   LightingSettings settings;
   settings.converge = 1e-6;
   settings.publishSeconds = 1e9;  // no snapshot but the first, unless pausing makes one
-  LightingThread lighting(radiosityInput(scene, meshed), settings);
+  LightingThread lighting(scene, meshed, settings);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_EQ(lighting.latest()->shots, 0u);
   lighting.setPaused(true);
@@ -139,7 +140,7 @@ TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
   LightingSettings settings;
   settings.converge = 0.05;
   settings.solver.resolution = 128;
-  settings.adaptive = radiosity::RefinementSettings{};
+  settings.adaptive = AdaptiveSettings{};
   LightingThread lighting(editor.scene(), editor.meshed(), settings);
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first->meshed, nullptr);
@@ -197,7 +198,7 @@ TEST(Lighting, AdaptivePassesRefineAMovedSurfaceTheMesherWouldRefuseWhereItNowSt
   LightingSettings settings;
   settings.converge = 0.05;
   settings.solver.resolution = 128;
-  settings.adaptive = radiosity::RefinementSettings{.threshold = 0.01};
+  settings.adaptive = AdaptiveSettings{.threshold = 0.01};
   LightingThread lighting(editor.scene(), editor.meshed(), settings);
   const uint32_t slab = *editor.findObject("slab");
   ObjectPose pose = poseOf(editor.scene().objects[slab]);
@@ -207,7 +208,8 @@ TEST(Lighting, AdaptivePassesRefineAMovedSurfaceTheMesherWouldRefuseWhereItNowSt
   for (size_t s = 0; s < editor.scene().surfaces.size(); ++s)
     if (editor.scene().surfaces[s].object == slab && editor.scene().surfaces[s].normal.y > 0.5) top = s;
   ASSERT_LT(top, editor.scene().surfaces.size());
-  EXPECT_THROW(meshSurface(editor.scene().surfaces[top]), mesher::MeshRefused);  // the premise: refused where it stands
+  mesher::Mesher mesher;
+  EXPECT_THROW(meshSurface(editor.scene().surfaces[top], mesher), mesher::MeshRefused);  // the premise: refused where it stands
 
   lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && (s.converged || !s.error.empty()); });

@@ -1,10 +1,10 @@
 // Adaptive refinement during solving (thesis 5.5) on a shadow: the mesh follows the shadow's
 // edge, stays conforming and exact, the light's ledgers stay exact, and the adapted solution is
 // what a fresh solve on the adapted mesh gives (new elements gather, they are not interpolated).
-#include "engine/lighting.h"
-#include "engine/mesh_adaptation.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
+#include "engine/document/lighting.h"
+#include "engine/document/mesh_adaptation.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
 #include "mesher/mesh_check.h"
 #include "tests/engine/test_scenes.h"
 #include "tests/mesher/mesh_expectations.h"

@@ -1,8 +1,9 @@
 // Model checks: each kind of defect found at its place, and none of the serious kinds in the
 // shipped scenes.
-#include "engine/model_check.h"
 #include "engine/diagnostics.h"
-#include "engine/scene_loader.h"
+#include "engine/geometry/model_check.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

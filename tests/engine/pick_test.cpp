@@ -1,5 +1,5 @@
 // Picking surfaces with rays, as a click in the window does.
-#include "engine/pick.h"
+#include "engine/geometry/pick.h"
 #include "tests/engine/test_scenes.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "engine/polygon_case.h"
+#include "engine/io/polygon_case.h"
 
 #include <gtest/gtest.h>
 

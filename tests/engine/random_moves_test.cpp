@@ -1,9 +1,9 @@
 // 200 random moves through the edit path (editor, cut-outs, the solution taking the edit): every
 // mesh stays exact and conforming, the light keeps its energy, and moving everything back
 // restores the loaded scene exactly.
-#include "engine/lighting.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
+#include "engine/document/lighting.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
 #include "mesher/mesh_check.h"
 #include "tests/engine/test_scenes.h"
 

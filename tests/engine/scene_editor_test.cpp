@@ -1,8 +1,9 @@
 // Moving objects: the surfaces and meshes go with them, rigidly, and come back exactly.
-#include "engine/edit_history.h"
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
+#include "engine/document/edit_history.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>

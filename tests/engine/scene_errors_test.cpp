@@ -1,7 +1,9 @@
 // Every way a scene can break spec/scene-format.md is refused with its diagnostic and the JSON
 // path of the problem, and nothing is returned.
-#include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_limits.h"
+#include "engine/io/load_scene.h"
+#include "engine/io/scene_loader.h"
 #include "tests/engine/test_scenes.h"
 
 #include <gtest/gtest.h>

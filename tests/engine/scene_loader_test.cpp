@@ -1,6 +1,7 @@
 // What the loader makes of every feature of spec/scene-format.md.
-#include "engine/scene_loader.h"
-#include "engine/solid_surfaces.h"
+#include "engine/geometry/solid_surfaces.h"
+#include "engine/io/load_scene.h"
+#include "radiosity/adaptive_refinement.h"
 #include "tests/engine/test_scenes.h"
 
 #include <glm/geometric.hpp>

@@ -1,8 +1,8 @@
 // Saving poses back into the scene's text: what is saved loads as what was edited.
-#include "engine/meshed_scene.h"
-#include "engine/scene_editor.h"
-#include "engine/scene_loader.h"
-#include "engine/scene_saver.h"
+#include "engine/document/scene_editor.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/scene_loader.h"
+#include "engine/io/scene_saver.h"
 #include "tests/engine/test_scenes.h"
 
 #include <gtest/gtest.h>

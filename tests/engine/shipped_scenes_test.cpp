@@ -1,6 +1,6 @@
 // The scenes in assets/ load and hold what the project promises of them.
-#include "engine/scene_loader.h"
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
+#include "engine/io/load_scene.h"
 #include "mesher/mesh_check.h"
 #include "tests/engine/test_scenes.h"
 

@@ -1,10 +1,10 @@
 // Meshing one surface: a triangle that is already a good element stays one; a repeat of a
 // surface met before gets the mesh meshing it gives; every mesh is an adaptive mesh's, under its
 // handles.
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
 
-#include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
+#include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 #include "mesher/adaptive_mesh.h"
 
 #include <gtest/gtest.h>
@@ -22,13 +22,17 @@ Surface triangle(Vec3 a, Vec3 b, Vec3 c, double patchSize) {
 
 TEST(SurfaceMesh, AWellShapedTriangleWithinThePatchSizeIsOneElement) {
   // Counter-clockwise seen from +y: (0,0,0), (0,0,1), (1,0,0); angles 45, 45, 90 degrees.
-  const SurfaceMesh small = meshSurface(triangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 2));
+  const auto meshed = [](const Surface& s) {
+    mesher::Mesher mesher;
+    return meshSurface(s, mesher);
+  };
+  const SurfaceMesh small = meshed(triangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 2));
   ASSERT_EQ(small.mesh.elements.size(), 1u);
   EXPECT_EQ(small.mesh.elements[0][3], mesher::Mesh::kNone);
   EXPECT_EQ(small.positions, (std::vector<Vec3>{{0, 0, 0}, {0, 0, 1}, {1, 0, 0}}));
   // Longer than the patch size, or with an angle under the bound (10 degrees): the quadtree's.
-  EXPECT_GT(meshSurface(triangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 0.5)).mesh.elements.size(), 1u);
-  EXPECT_GT(meshSurface(triangle({0, 0, 0}, {0, 0, 0.176}, {1, 0, 0}, 2)).mesh.elements.size(), 1u);
+  EXPECT_GT(meshed(triangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 0.5)).mesh.elements.size(), 1u);
+  EXPECT_GT(meshed(triangle({0, 0, 0}, {0, 0, 0.176}, {1, 0, 0}, 2)).mesh.elements.size(), 1u);
 }
 
 // A scene's surfaces meshed by one Mesher, as a scene is loaded: the kitchen's boxes have

@@ -1,6 +1,6 @@
 #include "tests/engine/test_scenes.h"
 
-#include "engine/scene_loader.h"
+#include "engine/io/scene_loader.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

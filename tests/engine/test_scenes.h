@@ -1,7 +1,7 @@
 // Small scenes and measurements shared by the engine tests.
 #pragma once
 
-#include "engine/json_reader.h"
+#include "engine/io/json_reader.h"
 #include "engine/scene.h"
 
 #include <string>

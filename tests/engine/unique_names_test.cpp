@@ -1,4 +1,4 @@
-#include "engine/unique_names.h"
+#include "engine/io/unique_names.h"
 
 #include <gtest/gtest.h>
 

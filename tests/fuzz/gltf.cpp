@@ -1,7 +1,7 @@
 #include "tests/fuzz/fuzz_targets.h"
 
 #include "engine/diagnostics.h"
-#include "engine/gltf_loader.h"
+#include "engine/io/gltf_loader.h"
 #include "tests/fuzz/meshable.h"
 #include "tests/fuzz/temp_folder.h"
 

@@ -1,8 +1,8 @@
 #include "tests/fuzz/meshable.h"
 
 #include "engine/diagnostics.h"
-#include "engine/polygon_case.h"
-#include "engine/surface_mesh.h"
+#include "engine/geometry/surface_mesh.h"
+#include "engine/io/polygon_case.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,5 +1,5 @@
 // What the mesher may be given (mesher::meshPolygon: simple rings, holes strictly inside and
-// apart), checked as a polygon case is (engine/polygon_case.h), for the fuzz targets' oracles.
+// apart), checked as a polygon case is (engine/io/polygon_case.h), for the fuzz targets' oracles.
 #pragma once
 
 #include "engine/scene.h"

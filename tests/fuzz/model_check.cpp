@@ -10,9 +10,9 @@
 #include "tests/fuzz/fuzz_targets.h"
 
 #include "engine/diagnostics.h"
-#include "engine/gltf_loader.h"
-#include "engine/model_check.h"
-#include "engine/scene_loader.h"
+#include "engine/geometry/model_check.h"
+#include "engine/io/gltf_loader.h"
+#include "engine/io/scene_loader.h"
 #include "tests/engine/gltf_writer.h"
 #include "tests/fuzz/byte_reader.h"
 #include "tests/fuzz/meshable.h"

@@ -1,7 +1,7 @@
 #include "tests/fuzz/fuzz_targets.h"
 
 #include "engine/diagnostics.h"
-#include "engine/polygon_case.h"
+#include "engine/io/polygon_case.h"
 
 #include <string_view>
 

@@ -5,7 +5,7 @@
 // --gtest_also_run_disabled_tests and moved to regressions/ once fixed.
 #include "tests/fuzz/fuzz_targets.h"
 
-#include "engine/scene_loader.h"
+#include "engine/io/input_file.h"
 
 #include <gtest/gtest.h>
 

@@ -17,8 +17,8 @@
 #include "tests/fuzz/fuzz_targets.h"
 
 #include "engine/diagnostics.h"
-#include "engine/json_reader.h"
-#include "engine/scene_loader.h"
+#include "engine/io/json_reader.h"
+#include "engine/io/scene_loader.h"
 #include "tests/fuzz/byte_reader.h"
 #include "tests/fuzz/meshable.h"
 

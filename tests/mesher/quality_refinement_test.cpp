@@ -49,7 +49,7 @@ TEST(QualityRefinement, AReflexCornerNearASideGetsASmallerLeaf) {
   PolygonTree built = buildPolygonTree(polygon, 4);
   balance(built.tree);
   ASSERT_FALSE(cornerLeafReachesBound(built));
-  EXPECT_GT(refineForQuality(built), 0u);
+  EXPECT_GT(QualityRefiner(built).refine(), 0u);
   EXPECT_TRUE(cornerLeafReachesBound(built));
 
   expectMeshedWithinTheBound(polygon, 4);
@@ -99,7 +99,7 @@ TEST(QualityRefinement, ACornerNearASideTakesAMidpointFromAcross) {
   const Vec2 corner = built.frame.toTree({343, 332});
   const uint8_t level = built.tree[built.tree.leafAt(corner)].level;
   ASSERT_FALSE(cornerLeafReachesBound(built, corner));
-  EXPECT_GT(refineForQuality(built), 0u);
+  EXPECT_GT(QualityRefiner(built).refine(), 0u);
   EXPECT_TRUE(cornerLeafReachesBound(built, corner));
   EXPECT_EQ(built.tree[built.tree.leafAt(corner)].level, level);
 
@@ -213,7 +213,7 @@ TEST(QualityRefinement, SplitsThatDoNotHelpAreTakenBack) {
   balance(built.tree);
   ASSERT_FALSE(cornerLeafReachesBound(built));
   const size_t leaves = built.tree.leaves().size();
-  EXPECT_EQ(refineForQuality(built), 0u);
+  EXPECT_EQ(QualityRefiner(built).refine(), 0u);
   EXPECT_EQ(built.tree.leaves().size(), leaves);
 }
 
@@ -257,7 +257,7 @@ TEST(QualityRefinement, RefinedTreesStayBalanced) {
     const PolygonWithHoles polygon = trial % 2 ? test::randomStarPolygon(random, trial) : test::randomPolygonWithHoles(random, trial);
     PolygonTree built = buildPolygonTree(polygon, 3 + trial % 17);
     balance(built.tree);
-    splits += refineForQuality(built);
+    splits += QualityRefiner(built).refine();
     built.tree.changes.clear();
     EXPECT_EQ(balance(built.tree), 0u);
   }

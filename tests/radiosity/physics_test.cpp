@@ -63,7 +63,7 @@ void expectFurnace(double patchEdge) {
   for (uint32_t s = 0; s < box.size(); ++s) {
     for (const glm::dvec3& b : solver.elementRadiance(s))
       for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(b[c] / exact[c] - 1));
-    for (const glm::dvec3& b : solver.vertexRadiance(s, true))
+    for (const glm::dvec3& b : solver.vertexRadiance(s, solver.ambient()))
       for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(b[c] / exact[c] - 1));
   }
   std::printf("furnace (patches %g): %llu shots, worst relative error %.2e, escaped %.2e of emitted\n", patchEdge,
@@ -82,7 +82,7 @@ TEST(RadiosityPhysics, FurnaceAmbientBeforeAnyShot) {
   const glm::dvec3 rho{0.5}, emission{1};
   const std::vector<Surface> box = closedBox(1, 0.5, rho, emission);
   Solver solver(box);
-  for (const glm::dvec3& b : solver.vertexRadiance(0, true)) EXPECT_NEAR(b.x, 2.0, 1e-12);
+  for (const glm::dvec3& b : solver.vertexRadiance(0, solver.ambient())) EXPECT_NEAR(b.x, 2.0, 1e-12);
 }
 
 // The form factor from an emitter to a receiver, through the whole pipeline: the emitter does not

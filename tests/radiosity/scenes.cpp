@@ -1,10 +1,10 @@
 #include "tests/radiosity/scenes.h"
 
-#include "engine/meshed_scene.h"
-#include "engine/scene_loader.h"
+#include "mesher/mesher.h"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace radiosity::test {
@@ -83,11 +83,19 @@ double meanDifference(const Solver& a, const Solver& b) {
   return diff / level;
 }
 
-std::vector<Surface> cornellBox() {
-  const engine::Scene scene = engine::loadScene(WALKRAD_ASSETS "/cornell.json");
-  std::vector<Surface> surfaces = engine::radiosityInput(scene, engine::meshScene(scene));
-  for (Surface& s : surfaces) s.patchOfElement.clear();  // each element its own patch; tests group as they need
-  return surfaces;
+double worstDifference(const Solver& a, const Solver& b) {
+  double sum = 0, count = 0;
+  for (uint32_t s = 0; s < b.surfaceCount(); ++s)
+    for (const auto& r : b.elementRadiance(s)) sum += r.x + r.y + r.z, count += 3;
+  const double dark = 1e-6 * sum / count;
+  double worst = 0;
+  for (uint32_t s = 0; s < a.surfaceCount(); ++s) {
+    const auto ra = a.elementRadiance(s), rb = b.elementRadiance(s);
+    for (size_t e = 0; e < ra.size(); ++e)
+      for (int c = 0; c < 3; ++c)
+        if (rb[e][c] > dark) worst = std::max(worst, std::abs(ra[e][c] / rb[e][c] - 1));
+  }
+  return worst;
 }
 
 }  // namespace radiosity::test

@@ -1,6 +1,5 @@
 // Scenes for the radiosity tests: rectangles meshed by the quadtree mesher, single quads, a closed
-// box, a lit room with a board, and the shipped Cornell box meshed by the engine; and the measures
-// the tests compare solutions by.
+// box, a lit room with a board; and the measures the tests compare solutions by.
 #pragma once
 
 #include "radiosity/radiosity.h"
@@ -38,14 +37,16 @@ std::vector<SurfaceChange> changesOf(const std::vector<Surface>& now, std::span<
 // Sum over a surface's elements of area x radiance: its reflected power over pi.
 glm::dvec3 areaTimesRadiance(const Solver& solver, const Surface& surface, uint32_t index);
 
-// Every surface of the shipped Cornell box meshed at its patch size, as the solver takes it.
-std::vector<Surface> cornellBox();
-
 double area(const Surface& surface, uint32_t element);
 
 double channelSum(const glm::dvec3& v);
 
 // Mean absolute difference of element radiance over the mean, all surfaces (`b` the reference).
 double meanDifference(const Solver& a, const Solver& b);
+
+// The largest relative difference of element radiance, any channel, any element lit above a
+// millionth of the mean (`b` the reference): below that lie faces that see nothing (a block's
+// bottom on the floor), whose radiance is rounding left over from shots of both signs.
+double worstDifference(const Solver& a, const Solver& b);
 
 }  // namespace radiosity::test
