@@ -7,6 +7,7 @@
 #include "engine/geometry/meshed_scene.h"
 #include "engine/io/load_scene.h"
 #include "tests/app/image_read.h"
+#include "tests/app/pixel_probe.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -67,24 +68,11 @@ TEST_P(Golden, SolvedImageMatchesTheGolden) {
   ASSERT_EQ(image.height, expected.height);
 
   // The difference, amplified eight times, beside the actual image for whoever looks.
-  ImageRgb8 difference{image.width, image.height, std::vector<uint8_t>(image.pixels.size())};
-  double sum = 0;
-  size_t offPixels = 0;
-  for (size_t p = 0; p < image.pixels.size(); p += 3) {
-    int worst = 0;
-    for (size_t k = 0; k < 3; ++k) {
-      const int d = std::abs(int{image.pixels[p + k]} - int{expected.pixels[p + k]});
-      sum += d;
-      worst = std::max(worst, d);
-      difference.pixels[p + k] = static_cast<uint8_t>(std::min(255, 8 * d));
-    }
-    offPixels += worst > c.pixelLevels;
-  }
-  writePng(std::string(WALKRAD_TEST_OUTPUT) + "/golden-" + c.name + "-difference.png", difference);
-  const double mean = sum / static_cast<double>(image.pixels.size());
-  const double share = static_cast<double>(offPixels) / static_cast<double>(image.pixels.size() / 3);
-  EXPECT_LE(mean, c.meanLevels) << "mean difference in 8-bit levels";
-  EXPECT_LE(share, c.pixelShare) << "share of pixels more than " << c.pixelLevels << " levels off";
+  ImageRgb8 amplified;
+  const test::ImageDifference d = test::difference(image, expected, c.pixelLevels, &amplified);
+  writePng(std::string(WALKRAD_TEST_OUTPUT) + "/golden-" + c.name + "-difference.png", amplified);
+  EXPECT_LE(d.meanLevels, c.meanLevels) << "mean difference in 8-bit levels";
+  EXPECT_LE(d.shareBeyond, c.pixelShare) << "share of pixels more than " << c.pixelLevels << " levels off";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden, testing::ValuesIn(loadCases()),

@@ -104,19 +104,9 @@ TEST(HeadlessRender, ARoomFarFromTheOriginDrawsAsItsCopyAtTheOrigin) {
   const ImageRgb8 far = render(engine::loadScene(farPath), 160, 120).color;
   const ImageRgb8 near = render(engine::loadScene(nearPath), 160, 120).color;
   ASSERT_EQ(far.pixels.size(), near.pixels.size());
-  double sum = 0;
-  size_t apart = 0;
-  for (size_t i = 0; i < far.pixels.size(); i += 3) {
-    int most = 0;
-    for (size_t c = 0; c < 3; ++c) {
-      const int d = std::abs(int{far.pixels[i + c]} - int{near.pixels[i + c]});
-      sum += d;
-      most = std::max(most, d);
-    }
-    apart += most > 8;
-  }
-  EXPECT_LT(sum / static_cast<double>(far.pixels.size()), 1.0);
-  EXPECT_LT(static_cast<double>(apart), 0.01 * static_cast<double>(far.pixels.size() / 3));
+  const test::ImageDifference d = test::difference(far, near, 8);
+  EXPECT_LT(d.meanLevels, 1.0);
+  EXPECT_LT(d.shareBeyond, 0.01);
 }
 
 }  // namespace
