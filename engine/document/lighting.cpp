@@ -7,6 +7,15 @@
 
 namespace engine {
 
+namespace {
+
+// Whether the last edit's light is about right again: its take-backs done but for this share of
+// their power (the most powerful go first; the rest adjust what is shown by little).
+constexpr double kRelitShare = 0.05;
+bool relit(const radiosity::Solver& solver) { return solver.pendingCorrectionShare() <= kRelitShare; }
+
+}  // namespace
+
 LightingThread::LightingThread(Scene scene, MeshedScene meshed, const LightingSettings& settings)
     : settings_(settings), document_(std::move(scene), std::move(meshed), {settings.solver, settings.adaptive}) {
   // The first snapshot is made here, so that latest() always has one.
@@ -21,7 +30,10 @@ void LightingThread::run() {
   for (;;) {
     {
       std::unique_lock lock(mutex_);
-      const auto ready = [&] { return stop_ || restart_ || !requests_.empty() || (!paused_ && !done && !failed); };
+      // Poses wait while an edit's powerful take-backs are being done: the display gets each
+      // edit whole and relit (publish), and a drag's many poses come to the newest.
+      const auto edit = [&] { return restart_ || (!requests_.empty() && relit(document_.solver())); };
+      const auto ready = [&] { return stop_ || edit() || (!paused_ && !done && !failed); };
       // A pause (or its end) is shown by the thread once no shot is in flight, so a paused
       // snapshot shows every shot. After a failure the error snapshot stays.
       const auto pauseUnshown = [&] { return !failed && latest_->paused != paused_; };
@@ -35,7 +47,7 @@ void LightingThread::run() {
       wake_.wait(lock, [&] { return ready() || pauseUnshown(); });
       if (stop_) return;
       if (!ready()) continue;  // woken to show a pause
-      if (restart_ || !requests_.empty()) {
+      if (edit()) {
         try {
           applyRequests(lock);
           done = document_.solver().converged(settings_.converge);
@@ -154,7 +166,11 @@ void LightingThread::publish(bool converged, std::vector<PoseRefusal> refusals) 
   // Built outside the lock: the UI only ever waits for a pointer swap.
   auto snapshot = std::make_shared<LightingSnapshot>();
   const radiosity::Solver& solver = document_.solver();
-  displayRadiance(solver, snapshot->radiance);
+  // While an edit's light is being taken back and sent again, surfaces it changed are dark: the
+  // display keeps the light and meshes before the edit until its powerful part is done.
+  const bool shown = relit(solver) || !latest_;
+  if (shown) displayRadiance(solver, snapshot->radiance);
+  else snapshot->radiance = latest_->radiance;
   const radiosity::Stats& stats = solver.stats();
   snapshot->shots = stats.shots;
   snapshot->unshotFraction = solver.unshotFraction();
@@ -166,7 +182,8 @@ void LightingThread::publish(bool converged, std::vector<PoseRefusal> refusals) 
   snapshot->converged = converged;
   snapshot->adaptive = settings_.adaptive.has_value();
   snapshot->adaptivePasses = document_.adaptivePasses();
-  std::vector<SurfaceUpdate> meshes = document_.takeUpdates();
+  std::vector<SurfaceUpdate> meshes;
+  if (shown) meshes = document_.takeUpdates();
   std::lock_guard lock(mutex_);
   for (SurfaceUpdate& m : meshes) meshUpdates_.insert_or_assign(m.surface, std::move(m));
   for (PoseRefusal& r : refusals) refusals_.push_back(std::move(r));

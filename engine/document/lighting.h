@@ -89,9 +89,11 @@ class LightingThread {
   // shows its light. Restarting throws the solution away and starts again from the emitters.
   void setPaused(bool paused);
   void restart();
-  // Puts `object` at `pose` (LitScene::setPose), after the shot in flight, with any poses asked
-  // for since; a pose asked for while the previous one for the same object waits replaces it.
-  // Costs the caller a lock and a copy of the pose. The snapshots count the requests taken.
+  // Puts `object` at `pose` (LitScene::setPose), after the shot in flight and once the last
+  // edit's powerful take-backs are done, with any poses asked for since; a pose asked for while
+  // the previous one for the same object waits replaces it. Costs the caller a lock and a copy of
+  // the pose. The snapshots count the requests taken; their radiance and mesh updates show an
+  // edit once its powerful take-backs are done (until then, the light before it).
   void requestPose(uint32_t object, const ObjectPose& pose);
 
  private:
