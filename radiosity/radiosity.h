@@ -205,6 +205,9 @@ class Solver {
   void edit(std::span<const SurfaceChange> changes);
   // Take-backs still pending after the last edit.
   size_t pendingCorrections() const;
+  // The power of the take-backs still pending over that of all the last edit's (0 when none):
+  // the most powerful come first, so the light is about right again long before it reaches 0.
+  double pendingCorrectionShare() const;
 
   const Stats& stats() const;
   size_t surfaceCount() const;

@@ -839,6 +839,7 @@ struct Solver::Edit {
     double power = 0;    // the part of its shot power that can change course, summed over channels
   };
   std::vector<TakeBack> pending;  // least power first: taken from the back
+  double pendingPower = 0, editPower = 0;  // of the take-backs pending, and of all the edit's
   std::vector<uint32_t> elements, patches;  // scratch of one correction
 
   // What changed, for corrections in a window (frameInWindow).
@@ -1101,6 +1102,8 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
   }
   std::sort(edit->pending.begin(), edit->pending.end(),
             [](const Edit::TakeBack& a, const Edit::TakeBack& b) { return a.power < b.power; });
+  for (const Edit::TakeBack& t : edit->pending) edit->pendingPower += t.power;
+  edit->editPower = edit->pendingPower;
   if (!edit->pending.empty()) {
     edit->changed[0] = std::move(changed[0]);
     edit->changed[1] = std::move(changed[1]);
@@ -1115,6 +1118,7 @@ bool Solver::correct() {
   if (!edit_ || edit_->pending.empty()) return false;
   const Edit::TakeBack t = edit_->pending.back();
   edit_->pending.pop_back();
+  edit_->pendingPower -= t.power;
   State& now = *state_;
   takeBack(t.patch);
   const bool windowed = frameInWindow(t.patch);
@@ -1514,6 +1518,11 @@ bool Solver::frameInWindow(uint32_t p) {
 }
 
 size_t Solver::pendingCorrections() const { return edit_ ? edit_->pending.size() : 0; }
+
+double Solver::pendingCorrectionShare() const {
+  if (!edit_ || edit_->pending.empty() || edit_->editPower <= 0) return 0;
+  return std::max(0.0, edit_->pendingPower / edit_->editPower);
+}
 
 std::optional<Shooter> Solver::nextShooter() const {
   const State& s = *state_;

@@ -3,7 +3,7 @@
 #include "app/image/atomic_file.h"
 #include "engine/document/display_mesh.h"
 #include "engine/document/gltf_export.h"
-#include "engine/document/lighting.h"
+#include "engine/document/lit_scene.h"
 #include "engine/geometry/meshed_scene.h"
 
 #include <chrono>
@@ -26,15 +26,16 @@ int runExport(const ExportOptions& options) {
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
-  const engine::Scene scene = loadForSolve(options.scene, {options.out}, options.solve);
+  engine::Scene loaded = loadForSolve(options.scene, {options.out}, options.solve);
 
   // Meshed and solved as `walkrad render` does, then the display's vertex radiance is baked.
-  const engine::MeshedScene meshed = engine::meshScene(scene);
-  const std::unique_ptr<engine::MeshAdaptation> adaptation = adaptationFor(options.solve, scene, meshed);
-  radiosity::Solver solver(adaptation ? adaptation->input() : engine::radiosityInput(scene, meshed), solverSettings(options.solve));
-  solveWithProgress(solver, options.solve, "export", "solved", start, adaptation.get());
-  engine::DisplayMesh mesh = engine::displayMesh(adaptation ? adaptation->meshed() : meshed);
-  engine::displayRadiance(solver, mesh.radiance);
+  engine::MeshedScene meshed = engine::meshScene(loaded);
+  const engine::LitSceneSettings settings = litSceneSettings(options.solve, loaded);
+  engine::LitScene document(std::move(loaded), std::move(meshed), settings);
+  solveWithProgress(document, options.solve, "export", "solved", start);
+  const engine::Scene& scene = document.scene();
+  engine::DisplayMesh mesh = engine::displayMesh(document.meshed());
+  engine::displayRadiance(document.solver(), mesh.radiance);
 
   const double exposure = options.exposure.value_or(engine::autoExposure(mesh));
   const std::string bytes = engine::exportGltf(scene, mesh, {.exposure = exposure, .binary = binary});

@@ -6,9 +6,9 @@
 #include "app/image/atomic_file.h"
 #include "app/view/view_camera.h"
 #include "engine/document/display_mesh.h"
-#include "engine/document/lighting.h"
-#include "engine/document/mesh_adaptation.h"
-#include "engine/document/scene_editor.h"
+#include "engine/document/lit_scene.h"
+#include "engine/document/scene_poses.h"
+#include "engine/document/scene_view.h"
 #include "engine/geometry/meshed_scene.h"
 #include "engine/io/load_limits.h"
 
@@ -47,14 +47,14 @@ std::string beyondLimits(const std::string& name, const engine::Vec3& p) {
 // OBJECT:DX,DY,DZ (the name may hold colons: the offset follows the last one) for a movable
 // object of the scene, from where `positions` (per object) say earlier moves left it, to within
 // the scene limits. Throws std::invalid_argument with a one-line message naming the option.
-Move parseMove(const std::string& text, const engine::SceneEditor& editor, std::vector<engine::Vec3>& positions) {
+Move parseMove(const std::string& text, const engine::ScenePoses& poses, std::vector<engine::Vec3>& positions) {
   const auto fail = [&](const std::string& why) { throw std::invalid_argument("--move \"" + text + "\": " + why); };
   const size_t colon = text.rfind(':');
   if (colon == std::string::npos) fail("expected OBJECT:DX,DY,DZ");
   const std::string name = text.substr(0, colon);
-  const auto object = editor.findObject(name);
+  const auto object = poses.findObject(name);
   if (!object) fail("the scene has no object \"" + name + "\"");
-  if (!editor.scene().objects[*object].movable) fail("\"" + name + "\" is not movable");
+  if (!poses.scene().objects[*object].movable) fail("\"" + name + "\" is not movable");
   engine::Vec3 offset{0};
   const char* at = text.data() + colon + 1;
   const char* end = text.data() + text.size();
@@ -65,7 +65,7 @@ Move parseMove(const std::string& text, const engine::SceneEditor& editor, std::
     if (k < 2 && (at == end || *at++ != ',')) fail("expected three numbers DX,DY,DZ");
   }
   if (at != end) fail("expected three numbers DX,DY,DZ");
-  engine::ObjectPose pose = engine::poseOf(editor.scene().objects[*object]);
+  engine::ObjectPose pose = poses.pose(*object);
   pose.position = positions[*object] + offset;
   if (!engine::inSceneLimits(pose)) fail(beyondLimits(name, pose.position));
   positions[*object] = pose.position;
@@ -95,14 +95,15 @@ int runRender(const RenderOptions& options) {
 
   start = Clock::now();
   engine::MeshedScene meshed = engine::meshScene(loaded);
-  engine::SceneEditor editor(std::move(loaded), std::move(meshed));
-  engine::DisplayMesh mesh = engine::displayMesh(editor.meshed());
+  // What the window's thread that draws holds: the objects' poses and the display.
+  engine::SceneView view(loaded, meshed);
   const double meshMs = millisecondsSince(start);
+  const engine::ScenePoses& preview = view.poses();
   std::vector<Move> moves;
   try {
     std::vector<engine::Vec3> positions;
-    for (const engine::Object& o : editor.scene().objects) positions.push_back(o.position);
-    for (const std::string& text : options.moves) moves.push_back(parseMove(text, editor, positions));
+    for (const engine::Object& o : preview.scene().objects) positions.push_back(o.position);
+    for (const std::string& text : options.moves) moves.push_back(parseMove(text, preview, positions));
   } catch (const std::invalid_argument& e) {
     std::cerr << "walkrad render: " << e.what() << "\n";
     return 2;
@@ -110,65 +111,61 @@ int runRender(const RenderOptions& options) {
 
   // Solve first (progress on stdout about once a second), then light the display from it.
   start = Clock::now();
-  const radiosity::SolverSettings settings = solverSettings(options.solve);
-  // With adaptive refinement the solver lights the adaptation's meshes, which follow the light.
-  const std::unique_ptr<engine::MeshAdaptation> adaptation = adaptationFor(options.solve, editor.scene(), editor.meshed());
-  auto solver = std::make_unique<radiosity::Solver>(
-      adaptation ? adaptation->input() : engine::radiosityInput(editor.scene(), editor.meshed()), settings);
-  const auto solve = [&](const std::string& what) {
-    return solveWithProgress(*solver, options.solve, "render", what, start, adaptation.get());
-  };
+  const engine::LitSceneSettings settings = litSceneSettings(options.solve, loaded);
+  engine::LitScene document(std::move(loaded), std::move(meshed), settings);
+  const auto solve = [&](const std::string& what) { return solveWithProgress(document, options.solve, "render", what, start); };
   uint64_t shots = solve("solved");
   const double solveMs = millisecondsSince(start);
+  view.take({nullptr, document.takeUpdates(), {}});  // refined and coarsened while solving
 
-  // Moves go through the window's edit path: the editor moves the object, the solution takes
-  // the edit, and shooting goes on to convergence.
+  // Moves go through the window's edit path: the thread that draws moves the object's picture,
+  // the document (on the window's lighting thread) cuts, meshes and takes the edit into the light,
+  // the display takes the surfaces that changed, and shooting goes on to convergence.
   nlohmann::ordered_json moveStats = nlohmann::ordered_json::array();
   for (size_t i = 0; i < moves.size(); ++i) {
     const Move& move = moves[i];
-    start = Clock::now();
-    engine::ObjectPose pose = engine::poseOf(editor.scene().objects[move.object]);
+    engine::ObjectPose pose = preview.pose(move.object);
     pose.position = move.position;
+    start = Clock::now();
+    view.setPose(move.object, pose);
+    double uiMs = millisecondsSince(start);
+    const auto edit = Clock::now();
     try {
-      editor.setPose(move.object, pose);
+      document.setPose(move.object, pose);
     } catch (const engine::SceneError& e) {  // a surface the move would cut is refused by the mesher
       std::cerr << "walkrad render: --move \"" << options.moves[i] << "\": " << e.what() << "\n";
       return 2;
     }
-    const double remeshMs = millisecondsSince(start);
-    // What the window's thread that draws does for this move: the edit above, the display
-    // following it, and the copy of the edited scene and meshes that the lighting thread takes
-    // the edit from (LightingThread::edit). The solver's part runs on the lighting thread.
-    engine::followMove(editor.meshed(), editor.surfacesOf(move.object), !editor.remeshed().empty(), mesh);
-    const auto handedOver = std::make_unique<std::pair<engine::Scene, engine::MeshedScene>>(editor.scene(), editor.meshed());
-    const double uiMs = millisecondsSince(start);
-    engine::applyEdit(*solver, handedOver->first, handedOver->second, editor.takeEdited(), adaptation.get());
-    const bool first = solver->step();  // the first relit solution a display could show
+    const double remeshMs = millisecondsSince(edit);
+    const engine::LightingUpdate update{nullptr, document.takeUpdates(), {}};
+    const auto shown = Clock::now();
+    view.take(update);
+    uiMs += millisecondsSince(shown);
+    // The first relit solution a display could show.
+    const bool first = document.step(options.solve.converge) == engine::SolveStep::kShot;
     const double firstUpdateMs = millisecondsSince(start);
     shots += first + solve("move " + std::to_string(i + 1) + " converged");
     // Elements that moved or were made anew (the object's, and those of surfaces whose footprints
     // changed).
-    std::vector<uint32_t> touched = editor.surfacesOf(move.object);
-    touched.insert(touched.end(), editor.remeshed().begin(), editor.remeshed().end());
-    std::sort(touched.begin(), touched.end());
-    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     size_t changed = 0;
-    for (uint32_t s : touched) changed += editor.meshed().surfaces[s].mesh.elements.size();
-    moveStats.push_back({{"object", editor.scene().objects[move.object].name},
+    for (const engine::SurfaceUpdate& u : update.meshes) changed += u.mesh.mesh.elements.size();
+    const radiosity::Solver& solver = document.solver();
+    moveStats.push_back({{"object", preview.scene().objects[move.object].name},
                          {"remesh_ms", remeshMs},
                          {"ui_ms", uiMs},
                          {"first_update_ms", firstUpdateMs},
                          {"converge_ms", millisecondsSince(start)},
                          {"elements_changed", changed},
-                         {"corrections", solver->stats().corrections},
-                         {"windowed_corrections", solver->stats().windowedCorrections},
-                         {"shots", solver->stats().shots},
-                         {"unshot_fraction", solver->unshotFraction()}});
+                         {"corrections", solver.stats().corrections},
+                         {"windowed_corrections", solver.stats().windowedCorrections},
+                         {"shots", solver.stats().shots},
+                         {"unshot_fraction", solver.unshotFraction()}});
   }
-  if (adaptation) mesh = engine::displayMesh(adaptation->meshed());
-  else if (!moves.empty()) mesh = engine::displayMesh(editor.meshed());
-  engine::displayRadiance(*solver, mesh.radiance);
-  const engine::Scene& scene = editor.scene();
+  view.take({nullptr, document.takeUpdates(), {}});
+  engine::DisplayMesh& mesh = view.display();
+  const radiosity::Solver& solver = document.solver();
+  engine::displayRadiance(solver, mesh.radiance);
+  const engine::Scene& scene = document.scene();
 
   start = Clock::now();
   const float exposure = static_cast<float>(options.exposure.value_or(engine::autoExposure(mesh)));
@@ -184,11 +181,11 @@ int runRender(const RenderOptions& options) {
         {"mesh_ms", meshMs},
         {"solve_ms", solveMs},
         {"render_ms", renderMs},
-        {"patches", solver->patchCount()},
-        {"elements", solver->elementCount()},
+        {"patches", solver.patchCount()},
+        {"elements", solver.elementCount()},
         {"vertices", mesh.positions.size()},
         {"shots", shots},
-        {"unshot_fraction", solver->unshotFraction()},
+        {"unshot_fraction", solver.unshotFraction()},
         {"shots_per_second", solveMs > 0 ? 1000.0 * static_cast<double>(shots) / solveMs : 0.0},
         {"graphics_processors", options.solve.threads},
         {"surfaces", scene.surfaces.size()},
@@ -197,7 +194,7 @@ int runRender(const RenderOptions& options) {
         {"peak_rss_mb", peakResidentMegabytes()},
     };
     if (!moves.empty()) stats["moves"] = moveStats;
-    if (adaptation) stats["adaptive_passes"] = adaptation->passes();
+    if (settings.adaptive) stats["adaptive_passes"] = document.adaptivePasses();
     if (scene.imported) stats["import"] = importStats(scene);
     writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }

@@ -1,7 +1,6 @@
 #include "app/cli/scene_solve.h"
 
 #include "app/image/atomic_file.h"
-#include "engine/document/lighting.h"
 #include "engine/io/load_limits.h"
 #include "engine/io/load_scene.h"
 
@@ -17,26 +16,20 @@ engine::Scene loadForSolve(const std::string& path, const std::vector<std::strin
   return scene;
 }
 
-radiosity::SolverSettings solverSettings(const SolveOptions& options) {
-  return {.graphicsProcessors = options.threads, .overshoot = true};
+engine::LitSceneSettings litSceneSettings(const SolveOptions& options, const engine::Scene& scene) {
+  return {.solver = {.graphicsProcessors = options.threads, .overshoot = true}, .adaptive = adaptiveSettings(options.adapt, scene)};
 }
 
-std::unique_ptr<engine::MeshAdaptation> adaptationFor(const SolveOptions& options, const engine::Scene& scene,
-                                                      const engine::MeshedScene& meshed) {
-  const auto settings = adaptiveSettings(options.adapt, scene);
-  return settings ? std::make_unique<engine::MeshAdaptation>(scene, meshed, *settings) : nullptr;
-}
-
-uint64_t solveWithProgress(radiosity::Solver& solver, const SolveOptions& options, const std::string& command,
-                           const std::string& what, std::chrono::steady_clock::time_point start,
-                           engine::MeshAdaptation* adaptation) {
+uint64_t solveWithProgress(engine::LitScene& document, const SolveOptions& options, const std::string& command,
+                           const std::string& what, std::chrono::steady_clock::time_point start) {
   using Clock = std::chrono::steady_clock;
   auto lastReport = Clock::now();
-  const uint64_t shots = engine::solveTo(solver, options.converge, options.maxShots, [&](const radiosity::Solver& s, uint64_t n) {
+  const uint64_t shots = document.solve(options.converge, options.maxShots, [&](const radiosity::Solver& s, uint64_t n) {
     if (options.quiet || std::chrono::duration<double>(Clock::now() - lastReport).count() < 1) return;
     lastReport = Clock::now();
     std::cout << "walkrad " << command << ": " << n << " shots, unshot " << 100 * s.unshotFraction() << "%" << std::endl;
-  }, adaptation);
+  });
+  const radiosity::Solver& solver = document.solver();
   if (!options.quiet)
     std::cout << "walkrad " << command << ": " << what << " in " << std::chrono::duration<double>(Clock::now() - start).count()
               << " s: " << shots << " shots, unshot " << 100 * solver.unshotFraction() << "%, " << solver.patchCount()

@@ -3,15 +3,13 @@
 #pragma once
 
 #include "app/cli/adapt_options.h"
-#include "engine/document/mesh_adaptation.h"
+#include "engine/document/lit_scene.h"
 #include "engine/geometry/meshed_scene.h"
 #include "engine/io/load_scene.h"
 #include "engine/scene.h"
-#include "radiosity/radiosity.h"
 
 #include <chrono>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,21 +31,15 @@ struct SolveOptions {
 // is reported before an unwritable output, and both before the long part.
 engine::Scene loadForSolve(const std::string& path, const std::vector<std::string>& outputs, const SolveOptions& options);
 
-// The solver's settings for the options: their graphics processors, with overshooting (the
-// application's choice; radiosity/overshoot.h).
-radiosity::SolverSettings solverSettings(const SolveOptions& options);
+// How to light `scene` for the options: their graphics processors, with overshooting (the
+// application's choice; radiosity/overshoot.h), and the adaptive refinement the options and the
+// scene's settings ask for.
+engine::LitSceneSettings litSceneSettings(const SolveOptions& options, const engine::Scene& scene);
 
-// The adaptive refinement to run while solving `meshed` (made from `scene`), as the options and
-// the scene's settings say, or none.
-std::unique_ptr<engine::MeshAdaptation> adaptationFor(const SolveOptions& options, const engine::Scene& scene,
-                                                      const engine::MeshedScene& meshed);
-
-// Shoots until the options' convergence or shot limit (engine::solveTo), adapting the meshes
-// when `adaptation` is given (the solver's input must then be adaptation->input()). Unless quiet, prints
+// Shoots until the options' convergence or shot limit (LitScene::solve). Unless quiet, prints
 // "walkrad COMMAND: N shots, unshot X%" about once a second and at the end "walkrad COMMAND:
 // WHAT in S s: ..." with the time since `start`. Returns the shots taken.
-uint64_t solveWithProgress(radiosity::Solver& solver, const SolveOptions& options, const std::string& command,
-                           const std::string& what, std::chrono::steady_clock::time_point start,
-                           engine::MeshAdaptation* adaptation = nullptr);
+uint64_t solveWithProgress(engine::LitScene& document, const SolveOptions& options, const std::string& command,
+                           const std::string& what, std::chrono::steady_clock::time_point start);
 
 }  // namespace app

@@ -12,7 +12,7 @@ void ObjectDrag::deselect() {
 }
 
 bool ObjectDrag::press(const Ray& ray) {
-  const engine::Scene& scene = editor_.scene();
+  const engine::Scene& scene = view_.scene();
   const auto hit = engine::pickSurface(scene, ray.origin, ray.direction);
   if (!hit) {
     selected_.reset();
@@ -54,7 +54,7 @@ bool ObjectDrag::moveGrabbed() {
     slid_ = {position.x - start_.position.x, 0, position.z - start_.position.z};
     lifted_ = position.y - start_.position.y;
   }
-  engine::ObjectPose pose = engine::poseOf(editor_.scene().objects[*selected_]);
+  engine::ObjectPose pose = engine::poseOf(view_.scene().objects[*selected_]);
   pose.position = position;
   return place(pose);
 }
@@ -62,14 +62,14 @@ bool ObjectDrag::moveGrabbed() {
 std::optional<engine::PoseEdit> ObjectDrag::release() {
   if (!dragging_) return std::nullopt;
   dragging_ = false;
-  const engine::ObjectPose now = engine::poseOf(editor_.scene().objects[*selected_]);
+  const engine::ObjectPose now = engine::poseOf(view_.scene().objects[*selected_]);
   if (now == start_) return std::nullopt;
   return engine::PoseEdit{*selected_, start_, now};
 }
 
 std::optional<engine::PoseEdit> ObjectDrag::turn(double degrees) {
-  if (!selected_ || !editor_.scene().objects[*selected_].movable) return std::nullopt;
-  const engine::ObjectPose before = engine::poseOf(editor_.scene().objects[*selected_]);
+  if (!selected_ || !view_.scene().objects[*selected_].movable) return std::nullopt;
+  const engine::ObjectPose before = engine::poseOf(view_.scene().objects[*selected_]);
   engine::ObjectPose after = before;
   after.rotateYDeg = std::remainder(before.rotateYDeg + degrees, 360.0);
   if (!place(after) || dragging_) return std::nullopt;
@@ -77,14 +77,11 @@ std::optional<engine::PoseEdit> ObjectDrag::turn(double degrees) {
 }
 
 bool ObjectDrag::place(const engine::ObjectPose& pose) {
-  try {
-    const bool moved = editor_.setPose(*selected_, pose);
-    refusal_.clear();
-    return moved;
-  } catch (const engine::SceneError& e) {
-    refusal_ = e.what();
-    return false;
-  }
+  if (!view_.setPose(*selected_, pose)) return false;
+  newPose_ = {*selected_, pose};
+  return true;
 }
+
+void ObjectDrag::refused(const engine::PoseRefusal& refusal) { refusal_ = refusal.why; }
 
 }  // namespace app

@@ -1,16 +1,17 @@
-// Selecting and moving objects with the mouse and keys, as a pure controller over a SceneEditor:
-// the window feeds it rays and key presses, takes back the surfaces that moved and the edits to
-// record. A drag slides the object along the horizontal plane through the point grabbed (its
+// Selecting and moving objects with the mouse and keys, as a pure controller over the scene as the
+// thread that draws holds it (engine::SceneView): the window feeds it rays and key presses, asks
+// the document for the poses it gives (newPose) and takes back the edits to record. A drag slides the object along the horizontal plane through the point grabbed (its
 // resting plane: furniture stays on the floor); the wheel during a drag lifts it; turns are about
 // the vertical through the object's origin.
 #pragma once
 
 #include "engine/document/edit_history.h"
-#include "engine/document/scene_editor.h"
+#include "engine/document/scene_view.h"
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace app {
 
@@ -20,7 +21,7 @@ struct Ray {
 
 class ObjectDrag {
  public:
-  explicit ObjectDrag(engine::SceneEditor& editor) : editor_(editor) {}
+  explicit ObjectDrag(engine::SceneView& view) : view_(view) {}
 
   std::optional<uint32_t> selected() const { return selected_; }
   void deselect();
@@ -43,10 +44,15 @@ class ObjectDrag {
   // an object is selected, is movable and not being dragged (a drag records its turns with it).
   std::optional<engine::PoseEdit> turn(double degrees);
 
-  // Why the last move or turn was refused (one line: the mesher refused a surface it would have
-  // meshed again, engine::SceneError); empty once one succeeds. A refused move leaves the object
-  // at its last good pose.
+  // The pose the last move or turn put an object at, for the document to take; once taken.
+  std::optional<std::pair<uint32_t, engine::ObjectPose>> takeNewPose() { return std::exchange(newPose_, std::nullopt); }
+  // The document refused a pose (the mesher refused a surface it would have cut); the view has
+  // put the object back where the document keeps it. A drag goes on from there; its edit, and a
+  // turn's recorded already, are what the history is to hold.
+  void refused(const engine::PoseRefusal& refusal);
+  // Why the document last refused a pose (one line), until `accepted` says a later one was taken.
   const std::string& refusal() const { return refusal_; }
+  void accepted() { refusal_.clear(); }
 
  private:
   // Puts the selected object at `pose`, unless refused; returns whether it moved.
@@ -54,7 +60,7 @@ class ObjectDrag {
   // Puts the grabbed object where the drag's slide and lift take it, within the scene limits.
   bool moveGrabbed();
 
-  engine::SceneEditor& editor_;
+  engine::SceneView& view_;
   std::optional<uint32_t> selected_;
   bool dragging_ = false;
   engine::ObjectPose start_;   // the pose when the drag began
@@ -62,6 +68,7 @@ class ObjectDrag {
   double lifted_ = 0;          // height added by the wheel during this drag
   glm::dvec3 slid_{0};         // horizontal offset from the drag's start
   std::string refusal_;
+  std::optional<std::pair<uint32_t, engine::ObjectPose>> newPose_;
 };
 
 }  // namespace app

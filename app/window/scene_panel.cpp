@@ -38,7 +38,7 @@ void lightingSection(const engine::LightingSnapshot& lighting, PanelState& state
   ImGui::ProgressBar(static_cast<float>(1 - lighting.unshotFraction), ImVec2(-1, 0),
                      lighting.converged ? "converged" : lighting.paused ? "paused" : "shooting");
   ImGui::Text("%zu elements, %zu shooting patches", lighting.elements, lighting.patches);
-  if (lighting.meshed) ImGui::Text("adaptive refinement: %llu passes", static_cast<unsigned long long>(lighting.adaptivePasses));
+  if (lighting.adaptive) ImGui::Text("adaptive refinement: %llu passes", static_cast<unsigned long long>(lighting.adaptivePasses));
   if (!lighting.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "stopped: %s", lighting.error.c_str());
   ImGui::Checkbox("pause", &state.paused);
   ImGui::SameLine();

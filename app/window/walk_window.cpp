@@ -223,59 +223,26 @@ void writeViewStats(const std::string& path, const ViewRecord& record) {
 // each frame's time, from the top of its loop to the swap.
 std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& options, OpenedScene opened, ViewCamera camera,
                                      int& frame, int& exitCode, ViewRecord& record) {
-  SceneEdits edits(opened.path, std::move(opened.text), std::move(opened.scene));
-  const engine::Scene& scene = edits.editor().scene();  // follows the edits
-  engine::DisplayMesh mesh = engine::displayMesh(edits.editor().meshed());
-  engine::shadeWithAmbient(scene, mesh);
+  // The lighting thread's document and the window's view start from the same meshes.
+  engine::MeshedScene meshed = engine::meshScene(opened.scene);
+  SceneEdits edits(opened.path, std::move(opened.text), engine::SceneView(opened.scene, meshed));
+  const engine::Scene& scene = edits.view().scene();  // follows the edits
+  engine::DisplayMesh& mesh = edits.view().display();
+  engine::shadeWithAmbient(opened.scene, mesh);
 
   SceneRenderer renderer;
   renderer.upload(mesh);
   PanelState panel;
   panel.exposure = static_cast<float>(engine::autoExposure(mesh));
-  // The solver shoots on its own thread; each frame shows its newest snapshot.
+  // The document shoots on its own thread; each frame shows its newest snapshot.
   engine::LightingSettings lightingSettings = options.lighting;
   lightingSettings.adaptive = adaptiveSettings(options.adapt, scene);
-  engine::LightingThread lighting(scene, edits.editor().meshed(), lightingSettings);
-  std::shared_ptr<const engine::LightingSnapshot> shown;
-  // With adaptive refinement the display shows the lighting thread's meshes (null: the editor's).
-  std::shared_ptr<const engine::MeshedScene> shownMeshes;
+  engine::LightingThread lighting(std::move(opened.scene), std::move(meshed), lightingSettings);
+  std::shared_ptr<const engine::LightingSnapshot> shown = lighting.latest();
   ProgressLine progress(scene.file);
   panel.wireframe = options.wireframe;
   WalkSettings walk;
   walk.speed = defaultWalkSpeed(scene);
-
-  // An object moved: the display follows at once (a surface meshed again around a footprint
-  // keeps what light it can), the light after the edit is recorded. Snapshots of the light are
-  // shown only when they are of the display's own mesh: of the last edit sent, with no remesh
-  // since.
-  uint64_t editsSent = 0;
-  bool remeshedSinceSent = false;
-  auto showMoved = [&](uint32_t object) {
-    // The adaptive meshes shown give way to the editor's at a move.
-    const bool rebuild = !edits.editor().remeshed().empty() || shownMeshes;
-    if (!engine::followMove(edits.editor().meshed(), edits.editor().surfacesOf(object), rebuild, mesh)) {
-      renderer.updatePositions(mesh.positions);
-      return;
-    }
-    renderer.upload(mesh);
-    remeshedSinceSent = true;
-    shownMeshes = nullptr;
-  };
-  auto relight = [&] {
-    lighting.edit(scene, edits.editor().meshed(), edits.editor().takeEdited());
-    ++editsSent;
-    remeshedSinceSent = false;
-  };
-  auto recordEdit = [&](const std::optional<engine::PoseEdit>& edit) {
-    if (!edit) return;
-    edits.record(*edit);
-    relight();
-  };
-  auto afterHistoryStep = [&](std::optional<uint32_t> moved) {
-    if (!moved) return;
-    showMoved(*moved);
-    relight();
-  };
 
   glm::dvec2 lastMouse{0};
   bool looking = false, leftWasDown = false;
@@ -294,25 +261,27 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     const bool leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     if (leftDown && !leftWasDown && !ImGui::GetIO().WantCaptureMouse) drag.press(cursorRay(window, camera));
     if (leftDown && drag.dragging()) {
-      bool moved = drag.follow(cursorRay(window, camera));
+      drag.follow(cursorRay(window, camera));
       // A wheel notch lifts by 5 cm.
-      if (g_scroll != 0) moved = drag.lift(g_scroll * 0.05 / scene.metersPerUnit) || moved;
-      if (moved) showMoved(*drag.selected());
+      if (g_scroll != 0) drag.lift(g_scroll * 0.05 / scene.metersPerUnit);
     }
     g_scroll = 0;
+    const auto recordEdit = [&](const std::optional<engine::PoseEdit>& edit) {
+      if (edit) edits.record(*edit);
+    };
     if (!leftDown && leftWasDown) recordEdit(drag.release());
     leftWasDown = leftDown;
-    if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) {
-      const auto turned = drag.turn(pressed(GLFW_KEY_R) ? 15 : -15);
-      if (drag.selected() && scene.objects[*drag.selected()].movable && drag.refusal().empty()) showMoved(*drag.selected());
-      recordEdit(turned);
-    }
+    if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) recordEdit(drag.turn(pressed(GLFW_KEY_R) ? 15 : -15));
     if (pressed(GLFW_KEY_ESCAPE)) {
       recordEdit(drag.release());
       drag.deselect();
     }
-    if (pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL) || panel.undoRequested) afterHistoryStep(edits.undo());
-    if (pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL) || panel.redoRequested) afterHistoryStep(edits.redo());
+    if (pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL) || panel.undoRequested) edits.undo();
+    if (pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL) || panel.redoRequested) edits.redo();
+    // An object moved in the view: the picture follows at once, the document is asked for the pose.
+    const auto poses = edits.takePosesToSend();
+    for (const auto& [object, pose] : poses) lighting.requestPose(object, pose);
+    if (!poses.empty()) renderer.updatePositions(mesh.positions);
     if (pressed(GLFW_KEY_S, GLFW_MOD_CONTROL) || panel.saveRequested) {
       panel.saveReport = edits.save();
       std::cout << "walkrad view: " << panel.saveReport << std::endl;
@@ -323,19 +292,13 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       if (!panel.editReport.empty()) std::cout << "walkrad view: move refused: " << panel.editReport << std::endl;
     }
 
-    std::shared_ptr<const engine::LightingSnapshot> newest = lighting.latest();
-    if (newest != shown) {
-      shown = std::move(newest);
-      if (shown->edits == editsSent && !remeshedSinceSent && shown->meshed && shown->meshed != shownMeshes) {
-        // The lighting thread refined or coarsened: its meshes replace the display's.
-        mesh = engine::displayMesh(*shown->meshed);
-        shownMeshes = shown->meshed;
-        mesh.radiance = shown->radiance;
-        renderer.upload(mesh);
-      } else if (shown->edits == editsSent && !remeshedSinceSent && shown->radiance.size() == mesh.positions.size()) {
-        mesh.radiance = shown->radiance;
-        renderer.updateRadiance(mesh.radiance);
-      }
+    // What the document did since the last frame: meshes, refusals, light.
+    const engine::LightingUpdate update = lighting.take();
+    const engine::SceneView::Taken taken = edits.take(update);
+    if (taken.geometry) renderer.upload(mesh);
+    else if (taken.radiance) renderer.updateRadiance(mesh.radiance);
+    if (update.snapshot != shown) {
+      shown = update.snapshot;
       progress.report(*shown);
     }
     if (panel.autoExposureRequested) {
@@ -380,7 +343,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       settings.exposure = panel.exposure;
       settings.wireframe = panel.wireframe;
       if (const auto selected = edits.drag().selected())
-        for (uint32_t s : edits.editor().surfacesOf(*selected))
+        for (uint32_t s : edits.view().poses().surfacesOf(*selected))
           settings.highlight.push_back({mesh.surfaceEdgeStart[s], mesh.surfaceEdgeStart[s + 1]});
       renderer.draw(settings);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -21,4 +21,14 @@ std::optional<PoseEdit> EditHistory::redo() {
   return edits_[done_++];
 }
 
+void EditHistory::amendLast(uint32_t object, const ObjectPose& refused, const ObjectPose& kept) {
+  if (done_ == 0) return;
+  PoseEdit& last = edits_[done_ - 1];
+  if (last.object != object || last.after != refused) return;
+  last.after = kept;
+  if (last.before != last.after) return;
+  edits_.erase(edits_.begin() + static_cast<ptrdiff_t>(--done_));
+  if (saved_ > done_) saved_ = static_cast<size_t>(-1);  // the state saved was the refused pose's
+}
+
 }  // namespace engine

@@ -1,7 +1,7 @@
 // Undo and redo of object moves (Ctrl+Z, Ctrl+Y), and whether the scene differs from its file.
 #pragma once
 
-#include "engine/document/scene_editor.h"
+#include "engine/document/scene_poses.h"
 
 #include <cstdint>
 #include <optional>
@@ -23,6 +23,9 @@ class EditHistory {
   std::optional<PoseEdit> undo();
   // The edit to apply again (its `after`), or nothing when there is none.
   std::optional<PoseEdit> redo();
+  // The last edit done moved `object` to `refused`, which the document refused: it moved the
+  // object to `kept` instead (an edit that then changes nothing goes). Other edits stay.
+  void amendLast(uint32_t object, const ObjectPose& refused, const ObjectPose& kept);
   bool canUndo() const { return done_ > 0; }
   bool canRedo() const { return done_ < edits_.size(); }
 

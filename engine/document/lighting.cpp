@@ -1,104 +1,57 @@
 #include "engine/document/lighting.h"
 
-#include <glm/common.hpp>
+#include "engine/diagnostics.h"
 
 #include <chrono>
 #include <utility>
 
 namespace engine {
 
-void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out) {
-  out.clear();
-  const glm::dvec3 ambient = solver.ambient();
-  // Light shot back by corrections (and overshooting) can leave residue a hair below zero,
-  // within the unshot tolerance: shown, there is no light there.
-  for (uint32_t s = 0; s < solver.surfaceCount(); ++s)
-    for (const glm::dvec3& radiance : solver.vertexRadiance(s, ambient)) out.emplace_back(glm::max(radiance, glm::dvec3(0)));
+namespace {
+
+// Whether the last edit's light is about right again: its take-backs done but for this share of
+// their power (the most powerful go first; the rest adjust what is shown by little).
+constexpr double kRelitShare = 0.05;
+bool relit(const radiosity::Solver& solver) { return solver.pendingCorrectionShare() <= kRelitShare; }
+
+}  // namespace
+
+LightingThread::LightingThread(Scene scene, MeshedScene meshed, const LightingSettings& settings)
+    : settings_(settings), document_(std::move(scene), std::move(meshed), {settings.solver, settings.adaptive}) {
+  // The first snapshot is made here, so that latest() always has one.
+  publish(document_.solver().converged(settings_.converge));
+  thread_ = std::thread([this] { run(); });
 }
 
-uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
-                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress,
-                 MeshAdaptation* adaptation) {
-  uint64_t shots = 0;
-  while (shots < maxShots) {
-    if (adaptation && adaptation->adaptIfDue(solver, converge)) continue;
-    if (solver.converged(converge) || !solver.step()) break;
-    ++shots;
-    if (progress) progress(solver, shots);
-  }
-  return shots;
-}
-
-std::vector<radiosity::SurfaceChange> applyEdit(radiosity::Solver& solver, const Scene& scene, const MeshedScene& meshed,
-                                                std::span<const EditedSurface> edited, MeshAdaptation* adaptation) {
-  std::vector<radiosity::SurfaceChange> changes =
-      adaptation ? adaptation->edit(scene, meshed, edited) : radiosityChanges(scene, meshed, edited);
-  solver.edit(changes);
-  return changes;
-}
-
-LightingThread::LightingThread(const Scene& scene, const MeshedScene& meshed, const LightingSettings& settings)
-    : settings_(settings) {
-  if (settings.adaptive) {
-    adaptation_ = std::make_unique<MeshAdaptation>(scene, meshed, *settings.adaptive);
-    surfaces_ = adaptation_->input();
-    meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
-  } else {
-    surfaces_ = radiosityInput(scene, meshed);
-  }
-  start();
-}
-
-void LightingThread::start() {
-  // The first solver is made here, so bad input throws to the caller rather than on the thread.
-  auto first = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
-  publish(*first, first->converged(settings_.converge));
-  thread_ = std::thread([this, solver = std::move(first)]() mutable { run(std::move(solver)); });
-}
-
-void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
+void LightingThread::run() {
   using Clock = std::chrono::steady_clock;
   auto lastPublish = Clock::now();
-  bool done = solver->converged(settings_.converge), unpublished = false, failed = false;
+  bool done = document_.solver().converged(settings_.converge), unpublished = false, failed = false;
   for (;;) {
     {
       std::unique_lock lock(mutex_);
-      const auto ready = [&] {
-        return stop_ || restart_ || editsApplied_ < editsRequested_ || (!paused_ && !done && !failed);
-      };
+      // Poses wait while an edit's powerful take-backs are being done: the display gets each
+      // edit whole and relit (publish), and a drag's many poses come to the newest.
+      const auto edit = [&] { return restart_ || (!requests_.empty() && relit(document_.solver())); };
+      const auto ready = [&] { return stop_ || edit() || (!paused_ && !done && !failed); };
       // A pause (or its end) is shown by the thread once no shot is in flight, so a paused
       // snapshot shows every shot. After a failure the error snapshot stays.
       const auto pauseUnshown = [&] { return !failed && latest_->paused != paused_; };
       if (!ready() && (unpublished || pauseUnshown())) {
         // About to wait (paused): the shots since the last snapshot are shown first.
         lock.unlock();
-        publish(*solver, done);
+        publish(done);
         unpublished = false;
         continue;  // the pause may have changed meanwhile
       }
       wake_.wait(lock, [&] { return ready() || pauseUnshown(); });
       if (stop_) return;
       if (!ready()) continue;  // woken to show a pause
-      if (restart_ || editsApplied_ < editsRequested_) {
-        restart_ = false;
-        std::unique_ptr<std::pair<Scene, MeshedScene>> editedScene = std::move(editedScene_);
-        const std::vector<EditedSurface> edited = std::exchange(edited_, {});
-        editsApplied_ = editsRequested_;
-        lock.unlock();
+      if (edit()) {
         try {
-          if (editedScene) {
-            // The thread's input follows, for a restart.
-            for (radiosity::SurfaceChange& c :
-                 applyEdit(*solver, editedScene->first, editedScene->second, edited, adaptation_.get()))
-              surfaces_[c.surface] = std::move(c.now);
-            if (adaptation_) meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
-          } else {
-            if (adaptation_) surfaces_ = adaptation_->input();  // a restart lights the meshes as adapted so far
-            solver = std::make_unique<radiosity::Solver>(surfaces_, settings_.solver);
-          }
-          done = solver->converged(settings_.converge);
+          applyRequests(lock);
+          done = document_.solver().converged(settings_.converge);
           failed = unpublished = false;
-          publish(*solver, done);
         } catch (const std::exception& e) {
           failed = true;
           publishError(e.what());
@@ -108,15 +61,14 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
     }
     // A failed shot leaves the solver half-updated: it shoots no more until a restart.
     try {
-      const bool shot = solver->step();
-      // A pass that changed meshes is shown at once: the display takes the new meshes with it.
-      const bool adapted = adaptation_ && adaptation_->adaptIfDue(*solver, settings_.converge);
-      if (adapted) meshes_ = std::make_shared<const MeshedScene>(adaptation_->meshed());
-      done = !adapted && (!shot || solver->converged(settings_.converge));
+      const SolveStep step = document_.step(settings_.converge);
+      done = step == SolveStep::kDone;
       unpublished = true;
       const auto now = Clock::now();
-      if (done || adapted || std::chrono::duration<double>(now - lastPublish).count() >= settings_.publishSeconds) {
-        publish(*solver, done);
+      // A pass that changed meshes is shown at once: the display takes the new meshes with it.
+      if (done || step == SolveStep::kAdapted ||
+          std::chrono::duration<double>(now - lastPublish).count() >= settings_.publishSeconds) {
+        publish(done);
         unpublished = false;
         lastPublish = now;
       }
@@ -125,6 +77,29 @@ void LightingThread::run(std::unique_ptr<radiosity::Solver> solver) {
       publishError(e.what());
     }
   }
+}
+
+void LightingThread::applyRequests(std::unique_lock<std::mutex>& lock) {
+  const auto requests = std::exchange(requests_, {});
+  const bool restart = std::exchange(restart_, false);
+  const uint64_t requested = editsRequested_;
+  lock.unlock();
+  std::vector<PoseRefusal> refusals;
+  for (const auto& [object, pose] : requests) {
+    try {
+      document_.setPose(object, pose);
+    } catch (const SceneError& e) {
+      refusals.push_back({object, pose, poseOf(document_.scene().objects[object]), e.what()});
+    } catch (const std::invalid_argument& e) {
+      refusals.push_back({object, pose, poseOf(document_.scene().objects[object]), e.what()});
+    }
+  }
+  if (restart) document_.restart();
+  {
+    std::lock_guard relock(mutex_);
+    editsApplied_ = requested;
+  }
+  publish(document_.solver().converged(settings_.converge), std::move(refusals));
 }
 
 void LightingThread::publishError(const std::string& what) {
@@ -150,6 +125,17 @@ std::shared_ptr<const LightingSnapshot> LightingThread::latest() const {
   return latest_;
 }
 
+LightingUpdate LightingThread::take() {
+  LightingUpdate update;
+  std::lock_guard lock(mutex_);
+  update.snapshot = latest_;
+  update.meshes.reserve(meshUpdates_.size());
+  for (auto& [surface, mesh] : meshUpdates_) update.meshes.push_back(std::move(mesh));
+  meshUpdates_.clear();
+  update.refusals = std::exchange(refusals_, {});
+  return update;
+}
+
 void LightingThread::setPaused(bool paused) {
   {
     std::lock_guard lock(mutex_);
@@ -166,21 +152,25 @@ void LightingThread::restart() {
   wake_.notify_all();
 }
 
-void LightingThread::edit(const Scene& scene, const MeshedScene& meshed, std::span<const EditedSurface> edited) {
-  auto copy = std::make_unique<std::pair<Scene, MeshedScene>>(scene, meshed);
+void LightingThread::requestPose(uint32_t object, const ObjectPose& pose) {
   {
     std::lock_guard lock(mutex_);
-    editedScene_ = std::move(copy);
-    addEdits(edited_, edited);
+    if (!requests_.empty() && requests_.back().first == object) requests_.back().second = pose;
+    else requests_.emplace_back(object, pose);
     ++editsRequested_;
   }
   wake_.notify_all();
 }
 
-void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
+void LightingThread::publish(bool converged, std::vector<PoseRefusal> refusals) {
   // Built outside the lock: the UI only ever waits for a pointer swap.
   auto snapshot = std::make_shared<LightingSnapshot>();
-  displayRadiance(solver, snapshot->radiance);
+  const radiosity::Solver& solver = document_.solver();
+  // While an edit's light is being taken back and sent again, surfaces it changed are dark: the
+  // display keeps the light and meshes before the edit until its powerful part is done.
+  const bool shown = relit(solver) || !latest_;
+  if (shown) displayRadiance(solver, snapshot->radiance);
+  else snapshot->radiance = latest_->radiance;
   const radiosity::Stats& stats = solver.stats();
   snapshot->shots = stats.shots;
   snapshot->unshotFraction = solver.unshotFraction();
@@ -190,9 +180,13 @@ void LightingThread::publish(const radiosity::Solver& solver, bool converged) {
   snapshot->elements = solver.elementCount();
   snapshot->patches = solver.patchCount();
   snapshot->converged = converged;
-  snapshot->meshed = meshes_;
-  snapshot->adaptivePasses = adaptation_ ? adaptation_->passes() : 0;
+  snapshot->adaptive = settings_.adaptive.has_value();
+  snapshot->adaptivePasses = document_.adaptivePasses();
+  std::vector<SurfaceUpdate> meshes;
+  if (shown) meshes = document_.takeUpdates();
   std::lock_guard lock(mutex_);
+  for (SurfaceUpdate& m : meshes) meshUpdates_.insert_or_assign(m.surface, std::move(m));
+  for (PoseRefusal& r : refusals) refusals_.push_back(std::move(r));
   snapshot->edits = editsApplied_;
   snapshot->paused = paused_;
   snapshot->version = ++version_;

@@ -84,6 +84,7 @@ size_t MeshAdaptation::pass(radiosity::Solver& solver) {
     addWorldPositions(scene_.surfaces[s], surfaceMesh);  // the vertices it had keep theirs
     input_[s] = radiosityInput(scene_, meshed_, s);
     changes.push_back({static_cast<uint32_t>(s), input_[s]});
+    changed_.push_back(static_cast<uint32_t>(s));
   }
   if (!changes.empty()) {
     solver.edit(changes);
@@ -112,9 +113,9 @@ bool MeshAdaptation::adaptIfDue(radiosity::Solver& solver, double converge) {
 
 std::vector<radiosity::SurfaceChange> MeshAdaptation::edit(const Scene& scene, const MeshedScene& meshed,
                                                            std::span<const EditedSurface> edited) {
-  scene_ = scene;
   std::vector<radiosity::SurfaceChange> changes;
   for (const EditedSurface& e : edited) {
+    scene_.surfaces[e.surface] = scene.surfaces[e.surface];  // an edit costs what it changed
     adaptive_[e.surface].reset();
     unadaptable_[e.surface] = 0;
     meshed_.surfaces[e.surface] = meshed.surfaces[e.surface];

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace engine {
@@ -61,6 +62,8 @@ class MeshAdaptation {
                                              std::span<const EditedSurface> edited);
 
   uint64_t passes() const { return passes_; }  // passes that changed a mesh
+  // The surfaces whose meshes passes changed since the last call (a surface may come twice).
+  std::vector<uint32_t> takeChangedSurfaces() { return std::exchange(changed_, {}); }
 
  private:
   // The surface's adaptive mesh, made when it is first refined from SurfaceMesh::polygon: the
@@ -77,6 +80,7 @@ class MeshAdaptation {
   double nextPassAt_ = kPassFall;
   int convergedPasses_ = 0;
   uint64_t passes_ = 0;
+  std::vector<uint32_t> changed_;
 };
 
 }  // namespace engine

@@ -2,6 +2,7 @@
 #include "app/view/view_camera.h"
 #include "app/window/object_drag.h"
 #include "app/window/scene_edits.h"
+#include "engine/document/lighting.h"
 #include "engine/io/input_file.h"
 #include "engine/io/load_limits.h"
 #include "engine/io/load_scene.h"
@@ -11,8 +12,10 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 namespace app {
 namespace {
@@ -28,8 +31,10 @@ constexpr const char* kScene = R"({
     { "name": "box", "solids": [ { "profile": [[1, 1], [2, 1], [2, 2], [1, 2]], "from": 0, "to": 1, "material": "white" } ] }
   ] })";
 
+engine::SceneView viewOf(const engine::Scene& scene) { return engine::SceneView(scene, engine::meshScene(scene)); }
+
 SceneEdits editsOf(const std::string& path = "unused.json") {
-  return SceneEdits(path, kScene, engine::parseScene(kScene, path));
+  return SceneEdits(path, kScene, viewOf(engine::parseScene(kScene, path)));
 }
 
 // A ray from above the room's floor, looking down at (x, z).
@@ -39,10 +44,10 @@ TEST(ObjectDrag, ADragSlidesTheBoxOnTheFloorAndRecordsOneEdit) {
   SceneEdits edits = editsOf();
   ObjectDrag& drag = edits.drag();
   ASSERT_TRUE(drag.press(down(1.5, 1.5)));  // the box's top
-  EXPECT_EQ(edits.editor().scene().objects[*drag.selected()].name, "box");
+  EXPECT_EQ(edits.view().scene().objects[*drag.selected()].name, "box");
   // Grabbed on its top (y = 1), the box follows the ray's crossing with the plane y = 1.
   EXPECT_TRUE(drag.follow({{2.5, 2, 1.5}, glm::normalize(glm::dvec3{0.5, -1, 0.25})}));
-  const engine::Object& box = edits.editor().scene().objects[*drag.selected()];
+  const engine::Object& box = edits.view().scene().objects[*drag.selected()];
   EXPECT_NEAR(box.position.x, 1.5, 1e-12);
   EXPECT_NEAR(box.position.z, 0.25, 1e-12);
   EXPECT_EQ(box.position.y, 0);  // still on the floor
@@ -63,7 +68,7 @@ TEST(ObjectDrag, ADragStopsAtTheSceneLimits) {
   SceneEdits edits = editsOf();
   ObjectDrag& drag = edits.drag();
   ASSERT_TRUE(drag.press(down(1.5, 1.5)));
-  const engine::Object& box = edits.editor().scene().objects[*drag.selected()];
+  const engine::Object& box = edits.view().scene().objects[*drag.selected()];
   EXPECT_TRUE(drag.follow({{2.5, 2, 1.5}, glm::normalize(glm::dvec3{1, -1e-9, 0})}));  // crosses y = 1 at x = 1e9
   EXPECT_EQ(box.position.x, engine::kMaxLength);
   EXPECT_FALSE(drag.follow({{2.5, 2, 1.5}, {1, -1e-320, 0}}));  // crosses at infinity: stays
@@ -78,27 +83,70 @@ TEST(ObjectDrag, ADragStopsAtTheSceneLimits) {
 }
 
 // Dragged so that its footprint would leave a strip of floor 3 um wide 900 km from the origin
-// (finer than the mesher resolves there: engine's SceneEditor test), the box stays at its last
-// good pose and the drag says why; dragged on, it follows again and the drag is one edit.
-TEST(ObjectDrag, ADragThatWouldLeaveASliverTooFineStopsAtTheLastGoodPose) {
+// (finer than the mesher resolves there: engine's SceneEditor test), the box is shown there at
+// once, but the document on the lighting thread refuses the pose: the box goes back to its last
+// good pose and the drag says why until a later pose is taken; the drag is one edit.
+TEST(ObjectDrag, ADragThatWouldLeaveASliverTooFineGoesBackToTheLastGoodPose) {
   const std::string path = std::string(WALKRAD_SOURCE) + "/tests/cli/far_room_box.json";
-  SceneEdits edits(path, "", engine::loadScene(path));
+  const engine::Scene loaded = engine::loadScene(path);
+  const engine::MeshedScene meshed = engine::meshScene(loaded);
+  SceneEdits edits(path, "", engine::SceneView(loaded, meshed));
+  engine::LightingSettings settings;
+  settings.converge = 1;  // nothing to shoot: only the edits
+  engine::LightingThread lighting(loaded, meshed, settings);
+  uint64_t sent = 0;
+  // As the window's frame does: the poses to the document, then what it sends back, once it has
+  // taken them.
+  const auto exchange = [&] {
+    for (const auto& [object, pose] : edits.takePosesToSend()) {
+      lighting.requestPose(object, pose);
+      ++sent;
+    }
+    while (lighting.latest()->edits < sent) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    edits.take(lighting.take());
+  };
   ObjectDrag& drag = edits.drag();
   const auto below = [](double x, double z) { return Ray{{x, 0.9, z}, {0, -1, 0}}; };  // under the ceiling
   ASSERT_TRUE(drag.press(below(900000.5, 900000.5)));  // the box's top, its origin 0.1 away
-  const engine::Object& box = edits.editor().scene().objects[*drag.selected()];
+  const engine::Object& box = edits.view().scene().objects[*drag.selected()];
   ASSERT_TRUE(drag.follow(below(900000.6, 900000.5)));
+  exchange();
   const engine::ObjectPose good = engine::poseOf(box);
-  const size_t floorElements = edits.editor().meshed().surfaces[edits.editor().remeshed().at(0)].mesh.elements.size();
-  EXPECT_FALSE(drag.follow(below(900000.100003, 900000.5)));  // its side 3 um from the wall x = 900000
+  EXPECT_EQ(drag.refusal(), "");
+  EXPECT_TRUE(drag.follow(below(900000.100003, 900000.5)));  // its side 3 um from the wall x = 900000
+  EXPECT_NE(engine::poseOf(box), good);  // shown there until the document says no
+  exchange();
   EXPECT_EQ(engine::poseOf(box), good);
   EXPECT_NE(drag.refusal().find("detail finer than the coordinates resolve"), std::string::npos) << drag.refusal();
-  EXPECT_EQ(edits.editor().meshed().surfaces[edits.editor().remeshed().at(0)].mesh.elements.size(), floorElements);
   EXPECT_TRUE(drag.follow(below(900000.3, 900000.5)));
+  EXPECT_NE(drag.refusal(), "");  // until the document has taken the new pose
+  exchange();
   EXPECT_EQ(drag.refusal(), "");
   const auto edit = drag.release();
   ASSERT_TRUE(edit);
   EXPECT_EQ(edit->after, engine::poseOf(box));
+}
+
+// A turn recorded before the document refuses it is amended to the pose the object stayed at;
+// a refused turn that leaves the object where it was is no edit at all.
+TEST(SceneEdits, ARefusedTurnLeavesNoEdit) {
+  SceneEdits edits = editsOf();
+  ObjectDrag& drag = edits.drag();
+  drag.press(down(1.5, 1.5));
+  drag.release();
+  const auto turned = drag.turn(15);
+  ASSERT_TRUE(turned);
+  edits.record(*turned);
+  ASSERT_TRUE(edits.history().canUndo());
+  const uint32_t box = *drag.selected();
+  EXPECT_EQ(edits.takePosesToSend().size(), 1u);
+  engine::LightingUpdate update;
+  update.refusals.push_back({box, turned->after, turned->before, "refused"});
+  edits.take(update);
+  EXPECT_EQ(edits.view().scene().objects[box].rotateYDeg, 0);
+  EXPECT_EQ(drag.refusal(), "refused");
+  EXPECT_FALSE(edits.history().canUndo());
+  EXPECT_FALSE(edits.history().unsaved());
 }
 
 TEST(ObjectDrag, FixedObjectsAreSelectedButNotDragged) {
@@ -106,7 +154,7 @@ TEST(ObjectDrag, FixedObjectsAreSelectedButNotDragged) {
   ObjectDrag& drag = edits.drag();
   EXPECT_FALSE(drag.press(down(3, 2.5)));  // the floor
   ASSERT_TRUE(drag.selected());
-  EXPECT_EQ(edits.editor().scene().objects[*drag.selected()].name, "room");
+  EXPECT_EQ(edits.view().scene().objects[*drag.selected()].name, "room");
   EXPECT_FALSE(drag.follow(down(3.5, 2.5)));
   EXPECT_FALSE(drag.turn(15));
   EXPECT_FALSE(drag.release());
@@ -122,12 +170,19 @@ TEST(ObjectDrag, TurnsUndoAndRedo) {
   ASSERT_TRUE(turned);
   edits.record(*turned);
   const uint32_t box = *drag.selected();
-  EXPECT_EQ(edits.editor().scene().objects[box].rotateYDeg, 15);
+  EXPECT_EQ(edits.view().scene().objects[box].rotateYDeg, 15);
   EXPECT_EQ(edits.undo(), box);
-  EXPECT_EQ(edits.editor().scene().objects[box].rotateYDeg, 0);
+  EXPECT_EQ(edits.view().scene().objects[box].rotateYDeg, 0);
   EXPECT_EQ(edits.redo(), box);
-  EXPECT_EQ(edits.editor().scene().objects[box].rotateYDeg, 15);
+  EXPECT_EQ(edits.view().scene().objects[box].rotateYDeg, 15);
   EXPECT_FALSE(edits.redo());
+  // The document is asked for each pose in turn.
+  const auto sent = edits.takePosesToSend();
+  ASSERT_EQ(sent.size(), 3u);
+  EXPECT_EQ(sent[0].second.rotateYDeg, 15);
+  EXPECT_EQ(sent[1].second.rotateYDeg, 0);
+  EXPECT_EQ(sent[2].second.rotateYDeg, 15);
+  EXPECT_TRUE(edits.takePosesToSend().empty());
 }
 
 // kScene written as scene.json in a fresh folder `name` of the test output; its path.
@@ -184,8 +239,8 @@ TEST(SceneEdits, ASceneThatWouldNotLoadAgainIsNotSaved) {
 TEST(ObjectDrag, SavingAGltfModelIsRefusedWithAReason) {
   const std::string path = std::string(WALKRAD_SOURCE) + "/tests/cli/no_light.gltf";
   const std::string before = engine::readInputFile(path);
-  SceneEdits edits(path, "", engine::loadScene(path));
-  ASSERT_TRUE(edits.editor().setPose(0, {engine::Vec3(0.5, 0, 0), 0}));
+  SceneEdits edits(path, "", viewOf(engine::loadScene(path)));
+  ASSERT_TRUE(edits.view().setPose(0, {engine::Vec3(0.5, 0, 0), 0}));
   edits.record({0, {engine::Vec3(0), 0}, {engine::Vec3(0.5, 0, 0), 0}});
   const std::string report = edits.save();
   EXPECT_EQ(report, "not saved: " + path + " is a glTF model; walkrad saves poses only into scene files (.json)");

@@ -1,15 +1,18 @@
-// The solver on its own thread: snapshots of the shared meshes' radiance, pause and restart.
+// The document on its own thread: snapshots of the radiance with the meshes that changed, poses
+// asked for and refused, pause and restart.
 #include "engine/document/lighting.h"
 
 #include "engine/document/display_mesh.h"
 #include "engine/document/mesh_adaptation.h"
 #include "engine/document/scene_editor.h"
+#include "engine/document/scene_view.h"
 #include "engine/geometry/meshed_scene.h"
 #include "engine/io/load_scene.h"
 #include "engine/io/scene_loader.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -29,6 +32,28 @@ std::shared_ptr<const LightingSnapshot> waitFor(const LightingThread& lighting, 
     if (std::chrono::steady_clock::now() > deadline) {
       ADD_FAILURE() << "no such snapshot within a minute; the newest has " << s->shots << " shots";
       return s;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+// Polls the thread's updates until `ready` holds for the newest snapshot, the view (when given)
+// taking each; fails the test after a minute. Returns the last update, with every mesh and
+// refusal taken since the call.
+template <typename Ready>
+LightingUpdate takeUntil(LightingThread& lighting, SceneView* view, Ready ready) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  LightingUpdate all;
+  for (;;) {
+    LightingUpdate update = lighting.take();
+    if (view) view->take(update);
+    all.snapshot = update.snapshot;
+    for (SurfaceUpdate& m : update.meshes) all.meshes.push_back(std::move(m));
+    for (PoseRefusal& r : update.refusals) all.refusals.push_back(std::move(r));
+    if (ready(*all.snapshot)) return all;
+    if (std::chrono::steady_clock::now() > deadline) {
+      ADD_FAILURE() << "no such snapshot within a minute; the newest has " << all.snapshot->shots << " shots";
+      return all;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
@@ -96,17 +121,19 @@ TEST(Lighting, APausedSnapshotShowsEveryShot) {
   EXPECT_EQ(lighting.latest()->shots, paused->shots);  // nothing shot since
 }
 
-// Moves sent while the thread shoots (on two graphics processors), with a pause between them,
-// are all taken in: the last snapshot counts them, and with the object back where it was its
-// light is the unmoved scene's (within 0.5%, as EditPath.MovingAnObjectAndBackRestoresTheSolution).
-TEST(Lighting, MovesSentWhileShootingAreAllTakenIn) {
-  SceneEditor editor(loadAsset("cornell.json"), meshScene(loadAsset("cornell.json")));
+// Poses asked for while the thread shoots (on two graphics processors), with a pause between
+// them, are all taken in: the last snapshot counts them, and with the object back where it was
+// its light is the unmoved scene's (within 0.5%, as EditPath.MovingAnObjectAndBackRestoresTheSolution).
+TEST(Lighting, PosesAskedForWhileShootingAreAllTakenIn) {
+  const Scene scene = loadAsset("cornell.json");
+  const MeshedScene meshed = meshScene(scene);
+  const ScenePoses poses(scene);
   LightingSettings settings;
   settings.converge = 0.002;
   settings.solver.graphicsProcessors = 2;
-  LightingThread lighting(editor.scene(), editor.meshed(), settings);
-  const uint32_t block = *editor.findObject("short block");
-  const ObjectPose home = poseOf(editor.scene().objects[block]);
+  LightingThread lighting(scene, meshed, settings);
+  const uint32_t block = *poses.findObject("short block");
+  const ObjectPose home = poses.pose(block);
   uint64_t sent = 0;
   for (const Vec3 offset : {Vec3{120, 0, 100}, Vec3{-60, 0, 40}, Vec3{0, 0, 0}}) {
     // The last move taken in: its corrections are being shot.
@@ -115,14 +142,13 @@ TEST(Lighting, MovesSentWhileShootingAreAllTakenIn) {
       lighting.setPaused(true);
       lighting.setPaused(false);
     }
-    editor.setPose(block, {home.position + offset, home.rotateYDeg});
-    lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
+    lighting.requestPose(block, {home.position + offset, home.rotateYDeg});
     ++sent;
   }
   const auto done = waitFor(lighting, [&](const LightingSnapshot& s) { return s.edits == sent && s.converged; });
   EXPECT_FALSE(done->paused);
 
-  radiosity::Solver unmoved(radiosityInput(editor.scene(), editor.meshed()), settings.solver);
+  radiosity::Solver unmoved(radiosityInput(scene, meshed), settings.solver);
   unmoved.solve(settings.converge);
   std::vector<glm::vec3> here;
   displayRadiance(unmoved, here);
@@ -133,42 +159,83 @@ TEST(Lighting, MovesSentWhileShootingAreAllTakenIn) {
   EXPECT_LT(difference / level, 0.005);
 }
 
-// With adaptive refinement the thread publishes its meshes with the radiance, and comes to what a
-// solve on this thread with the same passes comes to; an edit keeps them coming.
-TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
-  SceneEditor editor(loadAsset("box-on-floor.json"), meshScene(loadAsset("box-on-floor.json")));
+// Poses asked for in a burst, before the thread takes any, count each but are taken only as the
+// newest per object: the thread meshes the box's move once, not once per mouse move.
+TEST(Lighting, ABurstOfPosesIsTakenAsItsNewest) {
+  const Scene scene = loadAsset("box-on-floor.json");
+  const MeshedScene meshed = meshScene(scene);
+  const ScenePoses poses(scene);
+  LightingSettings settings;
+  settings.converge = 0.05;
+  settings.solver.resolution = 128;
+  LightingThread lighting(scene, meshed, settings);
+  lighting.setPaused(true);
+  const uint32_t box = *poses.findObject("box");
+  ObjectPose pose = poses.pose(box);
+  for (int i = 0; i < 50; ++i) {
+    pose.position.x += 0.01;
+    lighting.requestPose(box, pose);
+  }
+  lighting.setPaused(false);
+  const LightingUpdate all = takeUntil(lighting, nullptr, [](const LightingSnapshot& s) { return s.edits == 50 && s.converged; });
+  EXPECT_TRUE(all.refusals.empty());
+  // The box's surfaces and the floor it stands on, each once, where the last pose put them.
+  ASSERT_FALSE(all.meshes.empty());
+  for (const SurfaceUpdate& u : all.meshes)
+    if (scene.surfaces[u.surface].object == box) {
+      EXPECT_EQ(u.pose, pose);
+    }
+  std::vector<uint32_t> surfaces;
+  for (const SurfaceUpdate& u : all.meshes) surfaces.push_back(u.surface);
+  EXPECT_TRUE(std::is_sorted(surfaces.begin(), surfaces.end()));
+  EXPECT_EQ(std::adjacent_find(surfaces.begin(), surfaces.end()), surfaces.end());
+  for (uint32_t s : poses.surfacesOf(box)) EXPECT_NE(std::find(surfaces.begin(), surfaces.end(), s), surfaces.end());
+  EXPECT_LT(surfaces.size(), scene.surfaces.size());  // the room's walls and ceiling are not sent
+}
+
+// With adaptive refinement the thread sends the meshes it refines with the radiance, so a view
+// taking its updates always has the radiance's vertices, and it comes to what a solve on this
+// thread with the same passes comes to; a pose asked for keeps them coming.
+TEST(Lighting, AdaptiveUpdatesCarryTheirMeshes) {
+  const Scene scene = loadAsset("box-on-floor.json");
+  const MeshedScene meshed = meshScene(scene);
   LightingSettings settings;
   settings.converge = 0.05;
   settings.solver.resolution = 128;
   settings.adaptive = AdaptiveSettings{};
-  LightingThread lighting(editor.scene(), editor.meshed(), settings);
-  const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
-  ASSERT_NE(first->meshed, nullptr);
-  EXPECT_EQ(first->radiance.size(), displayMesh(*first->meshed).positions.size());
-  const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.converged; });
-  EXPECT_GT(done->adaptivePasses, 0u);
-  EXPECT_NE(done->meshed, first->meshed);
-  const DisplayMesh adapted = displayMesh(*done->meshed);
-  EXPECT_EQ(done->elements, adapted.elements);
-  EXPECT_GT(adapted.elements, displayMesh(*first->meshed).elements);
-  EXPECT_EQ(done->radiance.size(), adapted.positions.size());
+  LightingThread lighting(scene, meshed, settings);
+  SceneView view(scene, meshed);
+  const size_t loadedElements = view.display().elements;
+  const LightingUpdate first = lighting.take();
+  EXPECT_TRUE(view.take(first).radiance);
+  const auto matches = [&](const LightingSnapshot& s) { return s.radiance.size() == view.display().positions.size(); };
+  EXPECT_TRUE(matches(*first.snapshot));
+  const LightingUpdate done = takeUntil(lighting, &view, [&](const LightingSnapshot& s) {
+    EXPECT_TRUE(matches(s));
+    return s.converged;
+  });
+  EXPECT_GT(done.snapshot->adaptivePasses, 0u);
+  EXPECT_FALSE(done.meshes.empty());
+  EXPECT_EQ(done.snapshot->elements, view.display().elements);
+  EXPECT_GT(view.display().elements, loadedElements);
 
-  MeshAdaptation adaptation(editor.scene(), editor.meshed(), *settings.adaptive);
+  MeshAdaptation adaptation(scene, meshed, *settings.adaptive);
   radiosity::Solver solver(adaptation.input(), settings.solver);
   solveTo(solver, settings.converge, UINT64_MAX, {}, &adaptation);
   std::vector<glm::vec3> here;
   displayRadiance(solver, here);
-  EXPECT_EQ(here, done->radiance);
-  EXPECT_EQ(adaptation.passes(), done->adaptivePasses);
+  EXPECT_EQ(here, done.snapshot->radiance);
+  EXPECT_EQ(adaptation.passes(), done.snapshot->adaptivePasses);
 
-  const uint32_t box = *editor.findObject("box");
-  ObjectPose pose = poseOf(editor.scene().objects[box]);
+  const uint32_t box = *view.poses().findObject("box");
+  ObjectPose pose = view.poses().pose(box);
   pose.position.x += 0.5;
-  editor.setPose(box, pose);
-  lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
-  const auto moved = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && s.converged; });
-  ASSERT_NE(moved->meshed, nullptr);
-  EXPECT_EQ(moved->radiance.size(), displayMesh(*moved->meshed).positions.size());
+  view.setPose(box, pose);
+  lighting.requestPose(box, pose);
+  takeUntil(lighting, &view, [&](const LightingSnapshot& s) {
+    EXPECT_TRUE(matches(s));
+    return s.edits == 1 && s.converged;
+  });
 }
 
 // A room 524,287 m from the origin and a slab floating in it whose top has a small open hole
@@ -192,14 +259,14 @@ constexpr const char* kFarSlab = R"({
 // the adaptive passes refine its top (main made them anew where it stands, and the mesher
 // refused it there): the lighting thread converges after the edit with no error.
 TEST(Lighting, AdaptivePassesRefineAMovedSurfaceTheMesherWouldRefuseWhereItNowStands) {
-  Scene loaded = parseScene(kFarSlab, "far-slab.json");
-  MeshedScene meshed = meshScene(loaded);
-  SceneEditor editor(std::move(loaded), std::move(meshed));
+  const Scene loaded = parseScene(kFarSlab, "far-slab.json");
+  const MeshedScene meshed = meshScene(loaded);
+  SceneEditor editor(loaded, meshed);
   LightingSettings settings;
   settings.converge = 0.05;
   settings.solver.resolution = 128;
   settings.adaptive = AdaptiveSettings{.threshold = 0.01};
-  LightingThread lighting(editor.scene(), editor.meshed(), settings);
+  LightingThread lighting(loaded, meshed, settings);
   const uint32_t slab = *editor.findObject("slab");
   ObjectPose pose = poseOf(editor.scene().objects[slab]);
   pose.position.x += 1;
@@ -211,13 +278,17 @@ TEST(Lighting, AdaptivePassesRefineAMovedSurfaceTheMesherWouldRefuseWhereItNowSt
   mesher::Mesher mesher;
   EXPECT_THROW(meshSurface(editor.scene().surfaces[top], mesher), mesher::MeshRefused);  // the premise: refused where it stands
 
-  lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
-  const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && (s.converged || !s.error.empty()); });
-  EXPECT_EQ(done->error, "");
-  EXPECT_TRUE(done->converged);
-  EXPECT_GT(done->adaptivePasses, 0u);
-  ASSERT_NE(done->meshed, nullptr);
-  EXPECT_GT(done->meshed->surfaces[top].mesh.elements.size(), editor.meshed().surfaces[top].mesh.elements.size());
+  lighting.requestPose(slab, pose);
+  const LightingUpdate done =
+      takeUntil(lighting, nullptr, [](const LightingSnapshot& s) { return s.edits == 1 && (s.converged || !s.error.empty()); });
+  EXPECT_EQ(done.snapshot->error, "");
+  EXPECT_TRUE(done.snapshot->converged);
+  EXPECT_TRUE(done.refusals.empty());
+  EXPECT_GT(done.snapshot->adaptivePasses, 0u);
+  size_t topElements = 0;
+  for (const SurfaceUpdate& u : done.meshes)
+    if (u.surface == top) topElements = u.mesh.mesh.elements.size();  // the newest
+  EXPECT_GT(topElements, editor.meshed().surfaces[top].mesh.elements.size());
 }
 
 }  // namespace

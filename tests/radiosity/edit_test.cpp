@@ -61,6 +61,26 @@ TEST(RadiosityEdit, AMovedBoardGivesWhatAFreshSolveGives) {
   EXPECT_LT(solver.stats().shots - shotsBefore, fresh.stats().shots);
 }
 
+// The share of the edit's take-back power still pending starts at 1, falls with every take-back,
+// fastest first (the most powerful come first), and is 0 once they are done.
+TEST(RadiosityEdit, ThePendingShareFallsMostPowerFirst) {
+  Solver solver(roomWithBoard(0, 0.4));
+  solver.solve(1e-3);
+  EXPECT_EQ(solver.pendingCorrectionShare(), 0);
+  solver.edit(changesOf(roomWithBoard(0.25, 0.4), kBoard));
+  ASSERT_GT(solver.pendingCorrections(), 2u);
+  EXPECT_DOUBLE_EQ(solver.pendingCorrectionShare(), 1);
+  std::vector<double> shares{1};
+  while (solver.pendingCorrections() > 0 && solver.step()) shares.push_back(solver.pendingCorrectionShare());
+  EXPECT_EQ(shares.back(), 0);
+  for (size_t k = 1; k < shares.size(); ++k) {
+    EXPECT_LE(shares[k], shares[k - 1]);
+    if (k + 1 < shares.size()) {
+      EXPECT_GE(shares[k - 1] - shares[k], shares[k] - shares[k + 1] - 1e-15) << "take-back " << k;
+    }
+  }
+}
+
 TEST(RadiosityEdit, MovingAndMovingBackRestoresTheSolution) {
   Solver solver(roomWithBoard(0, 0.4));
   solver.solve(1e-3);

@@ -1,0 +1,98 @@
+#include "engine/document/lit_scene.h"
+
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+
+namespace engine {
+
+void displayRadiance(const radiosity::Solver& solver, std::vector<glm::vec3>& out) {
+  out.clear();
+  const glm::dvec3 ambient = solver.ambient();
+  // Light shot back by corrections (and overshooting) can leave residue a hair below zero,
+  // within the unshot tolerance: shown, there is no light there.
+  for (uint32_t s = 0; s < solver.surfaceCount(); ++s)
+    for (const glm::dvec3& radiance : solver.vertexRadiance(s, ambient)) out.emplace_back(glm::max(radiance, glm::dvec3(0)));
+}
+
+SolveStep solveStep(radiosity::Solver& solver, double converge, MeshAdaptation* adaptation) {
+  if (adaptation && adaptation->adaptIfDue(solver, converge)) return SolveStep::kAdapted;
+  if (solver.converged(converge) || !solver.step()) return SolveStep::kDone;
+  return SolveStep::kShot;
+}
+
+uint64_t solveTo(radiosity::Solver& solver, double converge, uint64_t maxShots,
+                 const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress,
+                 MeshAdaptation* adaptation) {
+  uint64_t shots = 0;
+  while (shots < maxShots) {
+    const SolveStep step = solveStep(solver, converge, adaptation);
+    if (step == SolveStep::kDone) break;
+    if (step == SolveStep::kAdapted) continue;
+    ++shots;
+    if (progress) progress(solver, shots);
+  }
+  return shots;
+}
+
+std::vector<radiosity::SurfaceChange> applyEdit(radiosity::Solver& solver, const Scene& scene, const MeshedScene& meshed,
+                                                std::span<const EditedSurface> edited, MeshAdaptation* adaptation) {
+  std::vector<radiosity::SurfaceChange> changes =
+      adaptation ? adaptation->edit(scene, meshed, edited) : radiosityChanges(scene, meshed, edited);
+  solver.edit(changes);
+  return changes;
+}
+
+LitScene::LitScene(Scene scene, MeshedScene meshed, const LitSceneSettings& settings)
+    : settings_(settings), editor_(std::move(scene), std::move(meshed)), isChanged_(editor_.scene().surfaces.size(), 0) {
+  if (settings.adaptive) adaptation_ = std::make_unique<MeshAdaptation>(editor_.scene(), editor_.meshed(), *settings.adaptive);
+  restart();
+}
+
+LitScene::~LitScene() = default;
+
+const MeshedScene& LitScene::meshed() const { return adaptation_ ? adaptation_->meshed() : editor_.meshed(); }
+
+uint64_t LitScene::adaptivePasses() const { return adaptation_ ? adaptation_->passes() : 0; }
+
+uint64_t LitScene::solve(double converge, uint64_t maxShots,
+                         const std::function<void(const radiosity::Solver&, uint64_t shots)>& progress) {
+  return solveTo(*solver_, converge, maxShots, progress, adaptation_.get());
+}
+
+bool LitScene::setPose(uint32_t object, const ObjectPose& pose) {
+  if (!editor_.setPose(object, pose)) return false;
+  const std::vector<EditedSurface> edited = editor_.takeEdited();
+  applyEdit(*solver_, editor_.scene(), editor_.meshed(), edited, adaptation_.get());
+  for (const EditedSurface& e : edited) markChanged(e.surface);
+  return true;
+}
+
+void LitScene::restart() {
+  solver_ = std::make_unique<radiosity::Solver>(
+      adaptation_ ? adaptation_->input() : radiosityInput(editor_.scene(), editor_.meshed()), settings_.solver);
+}
+
+std::vector<SurfaceUpdate> LitScene::takeUpdates() {
+  if (adaptation_)
+    for (uint32_t s : adaptation_->takeChangedSurfaces()) markChanged(s);
+  std::sort(changed_.begin(), changed_.end());
+  std::vector<SurfaceUpdate> updates;
+  updates.reserve(changed_.size());
+  const Scene& scene = editor_.scene();
+  for (uint32_t s : changed_) {
+    isChanged_[s] = 0;
+    updates.push_back({s, meshed().surfaces[s], poseOf(scene.objects[scene.surfaces[s].object])});
+  }
+  changed_.clear();
+  return updates;
+}
+
+void LitScene::markChanged(uint32_t surface) {
+  if (isChanged_[surface]) return;
+  isChanged_[surface] = 1;
+  changed_.push_back(surface);
+}
+
+}  // namespace engine
