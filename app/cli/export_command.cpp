@@ -33,15 +33,15 @@ int runExport(const ExportOptions& options) {
   const std::unique_ptr<engine::MeshAdaptation> adaptation = adaptationFor(options.solve, scene, meshed);
   radiosity::Solver solver(adaptation ? adaptation->input() : engine::radiosityInput(scene, meshed), solverSettings(options.solve));
   solveWithProgress(solver, options.solve, "export", "solved", start, adaptation.get());
-  engine::DisplayMesh mesh = engine::displayMesh(adaptation ? adaptation->meshed() : meshed);
-  engine::displayRadiance(solver, mesh.radiance);
+  engine::DisplayMesh mesh = engine::displayMesh(scene, adaptation ? adaptation->meshed() : meshed);
+  engine::setRadiance(mesh, solver);
 
   const double exposure = options.exposure.value_or(engine::autoExposure(mesh));
   const std::string bytes = engine::exportGltf(scene, mesh, {.exposure = exposure, .binary = binary});
   writeFileAtomically(options.out, bytes);
   if (!options.solve.quiet)
     std::cout << "walkrad export: " << options.out << ": " << bytes.size() << " bytes, " << mesh.triangleCount()
-              << " triangles, " << mesh.positions.size() << " vertices, exposure " << exposure << std::endl;
+              << " triangles, " << mesh.vertices << " vertices, exposure " << exposure << std::endl;
   return 0;
 }
 

@@ -96,7 +96,7 @@ int runRender(const RenderOptions& options) {
   start = Clock::now();
   engine::MeshedScene meshed = engine::meshScene(loaded);
   engine::SceneEditor editor(std::move(loaded), std::move(meshed));
-  engine::DisplayMesh mesh = engine::displayMesh(editor.meshed());
+  engine::DisplayMesh mesh = engine::displayMesh(editor.scene(), editor.meshed());
   const double meshMs = millisecondsSince(start);
   std::vector<Move> moves;
   try {
@@ -139,7 +139,7 @@ int runRender(const RenderOptions& options) {
     // What the window's thread that draws does for this move: the edit above, the display
     // following it, and the copy of the edited scene and meshes that the lighting thread takes
     // the edit from (LightingThread::edit). The solver's part runs on the lighting thread.
-    engine::followMove(editor.meshed(), editor.surfacesOf(move.object), !editor.remeshed().empty(), mesh);
+    engine::followMove(editor.meshed(), editor.surfacesOf(move.object), editor.remeshed(), mesh);
     const auto handedOver = std::make_unique<std::pair<engine::Scene, engine::MeshedScene>>(editor.scene(), editor.meshed());
     const double uiMs = millisecondsSince(start);
     engine::applyEdit(*solver, handedOver->first, handedOver->second, editor.takeEdited(), adaptation.get());
@@ -165,10 +165,10 @@ int runRender(const RenderOptions& options) {
                          {"shots", solver->stats().shots},
                          {"unshot_fraction", solver->unshotFraction()}});
   }
-  if (adaptation) mesh = engine::displayMesh(adaptation->meshed());
-  else if (!moves.empty()) mesh = engine::displayMesh(editor.meshed());
-  engine::displayRadiance(*solver, mesh.radiance);
   const engine::Scene& scene = editor.scene();
+  if (adaptation) mesh = engine::displayMesh(scene, adaptation->meshed());
+  else if (!moves.empty()) mesh = engine::displayMesh(scene, editor.meshed());
+  engine::setRadiance(mesh, *solver);
 
   start = Clock::now();
   const float exposure = static_cast<float>(options.exposure.value_or(engine::autoExposure(mesh)));
@@ -186,7 +186,7 @@ int runRender(const RenderOptions& options) {
         {"render_ms", renderMs},
         {"patches", solver->patchCount()},
         {"elements", solver->elementCount()},
-        {"vertices", mesh.positions.size()},
+        {"vertices", mesh.vertices},
         {"shots", shots},
         {"unshot_fraction", solver->unshotFraction()},
         {"shots_per_second", solveMs > 0 ? 1000.0 * static_cast<double>(shots) / solveMs : 0.0},

@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <numeric>
 
 namespace app {
 
@@ -225,7 +226,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
                                      int& frame, int& exitCode, ViewRecord& record) {
   SceneEdits edits(opened.path, std::move(opened.text), std::move(opened.scene));
   const engine::Scene& scene = edits.editor().scene();  // follows the edits
-  engine::DisplayMesh mesh = engine::displayMesh(edits.editor().meshed());
+  engine::DisplayMesh mesh = engine::displayMesh(scene, edits.editor().meshed());
   engine::shadeWithAmbient(scene, mesh);
 
   SceneRenderer renderer;
@@ -252,12 +253,13 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
   bool remeshedSinceSent = false;
   auto showMoved = [&](uint32_t object) {
     // The adaptive meshes shown give way to the editor's at a move.
-    const bool rebuild = !edits.editor().remeshed().empty() || shownMeshes;
-    if (!engine::followMove(edits.editor().meshed(), edits.editor().surfacesOf(object), rebuild, mesh)) {
-      renderer.updatePositions(mesh.positions);
-      return;
+    std::vector<uint32_t> remeshed = edits.editor().remeshed();
+    if (shownMeshes) {
+      remeshed.resize(mesh.surfaces.size());
+      std::iota(remeshed.begin(), remeshed.end(), 0u);
     }
-    renderer.upload(mesh);
+    renderer.updateSurfaces(mesh, engine::followMove(edits.editor().meshed(), edits.editor().surfacesOf(object), remeshed, mesh));
+    if (remeshed.empty()) return;
     remeshedSinceSent = true;
     shownMeshes = nullptr;
   };
@@ -328,13 +330,12 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       shown = std::move(newest);
       if (shown->edits == editsSent && !remeshedSinceSent && shown->meshed && shown->meshed != shownMeshes) {
         // The lighting thread refined or coarsened: its meshes replace the display's.
-        mesh = engine::displayMesh(*shown->meshed);
+        mesh = engine::displayMesh(scene, *shown->meshed);
         shownMeshes = shown->meshed;
-        mesh.radiance = shown->radiance;
+        engine::setRadiance(mesh, shown->radiance);
         renderer.upload(mesh);
-      } else if (shown->edits == editsSent && !remeshedSinceSent && shown->radiance.size() == mesh.positions.size()) {
-        mesh.radiance = shown->radiance;
-        renderer.updateRadiance(mesh.radiance);
+      } else if (shown->edits == editsSent && !remeshedSinceSent && engine::setRadiance(mesh, shown->radiance)) {
+        renderer.updateRadiance(mesh);
       }
       progress.report(*shown);
     }
@@ -379,9 +380,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       settings.height = height;
       settings.exposure = panel.exposure;
       settings.wireframe = panel.wireframe;
-      if (const auto selected = edits.drag().selected())
-        for (uint32_t s : edits.editor().surfacesOf(*selected))
-          settings.highlight.push_back({mesh.surfaceEdgeStart[s], mesh.surfaceEdgeStart[s + 1]});
+      settings.highlight = edits.drag().selected();
       renderer.draw(settings);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
@@ -417,7 +416,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     glfwSwapBuffers(window);
     record.frames.add(1000 * (glfwGetTime() - frameStart));
     record.elements = mesh.elements;
-    record.vertices = mesh.positions.size();
+    record.vertices = mesh.vertices;
     record.shots = shown->shots;
     record.unshotFraction = shown->unshotFraction;
     if (options.frames > 0 && frame >= options.frames) break;

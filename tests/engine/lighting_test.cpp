@@ -37,13 +37,13 @@ std::shared_ptr<const LightingSnapshot> waitFor(const LightingThread& lighting, 
 TEST(Lighting, SnapshotsMatchASolveOnThisThreadShotForShot) {
   const Scene scene = loadAsset("cornell.json");
   const MeshedScene meshed = meshScene(scene);
-  const DisplayMesh display = displayMesh(meshed);
+  const DisplayMesh display = displayMesh(scene, meshed);
   LightingSettings settings;
   settings.converge = 0.05;
   LightingThread lighting(scene, meshed, settings);
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first, nullptr);
-  EXPECT_EQ(first->radiance.size(), display.positions.size());
+  EXPECT_EQ(first->radiance.size(), display.vertices);
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.converged; });
   EXPECT_GT(done->version, first->version);
   EXPECT_LE(done->unshotFraction, 0.05);
@@ -144,14 +144,14 @@ TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
   LightingThread lighting(editor.scene(), editor.meshed(), settings);
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first->meshed, nullptr);
-  EXPECT_EQ(first->radiance.size(), displayMesh(*first->meshed).positions.size());
+  EXPECT_EQ(first->radiance.size(), displayMesh(editor.scene(), *first->meshed).vertices);
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.converged; });
   EXPECT_GT(done->adaptivePasses, 0u);
   EXPECT_NE(done->meshed, first->meshed);
-  const DisplayMesh adapted = displayMesh(*done->meshed);
+  const DisplayMesh adapted = displayMesh(editor.scene(), *done->meshed);
   EXPECT_EQ(done->elements, adapted.elements);
-  EXPECT_GT(adapted.elements, displayMesh(*first->meshed).elements);
-  EXPECT_EQ(done->radiance.size(), adapted.positions.size());
+  EXPECT_GT(adapted.elements, displayMesh(editor.scene(), *first->meshed).elements);
+  EXPECT_EQ(done->radiance.size(), adapted.vertices);
 
   MeshAdaptation adaptation(editor.scene(), editor.meshed(), *settings.adaptive);
   radiosity::Solver solver(adaptation.input(), settings.solver);
@@ -168,7 +168,7 @@ TEST(Lighting, AdaptiveSnapshotsCarryTheirMeshes) {
   lighting.edit(editor.scene(), editor.meshed(), editor.takeEdited());
   const auto moved = waitFor(lighting, [](const LightingSnapshot& s) { return s.edits == 1 && s.converged; });
   ASSERT_NE(moved->meshed, nullptr);
-  EXPECT_EQ(moved->radiance.size(), displayMesh(*moved->meshed).positions.size());
+  EXPECT_EQ(moved->radiance.size(), displayMesh(editor.scene(), *moved->meshed).vertices);
 }
 
 // A room 524,287 m from the origin and a slab floating in it whose top has a small open hole
