@@ -198,6 +198,7 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 struct ViewRecord {
   FrameTimes frames;
   size_t elements = 0, vertices = 0;
+  FrameCounts chunks;  // of the last frame
   uint64_t shots = 0;
   double unshotFraction = 1;
 };
@@ -210,6 +211,8 @@ void writeViewStats(const std::string& path, const ViewRecord& record) {
       {"frame_ms_max", record.frames.quantile(1)},
       {"elements", record.elements},
       {"vertices", record.vertices},
+      {"chunks_drawn", record.chunks.chunksDrawn},
+      {"chunks_culled", record.chunks.chunksCulled},
       {"shots", record.shots},
       {"unshot_fraction", record.unshotFraction},
       {"peak_rss_mb", peakResidentMegabytes()},
@@ -417,6 +420,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     record.frames.add(1000 * (glfwGetTime() - frameStart));
     record.elements = mesh.elements;
     record.vertices = mesh.vertices;
+    record.chunks = renderer.lastFrame();
     record.shots = shown->shots;
     record.unshotFraction = shown->unshotFraction;
     if (options.frames > 0 && frame >= options.frames) break;
