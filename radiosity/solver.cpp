@@ -761,15 +761,18 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   // Keep the energy, per channel: the difference comes out of everything else the centre saw,
   // sky included, when that is plenty (more than ten times the difference). Where nearly
   // everything is new (a small closed room, all of it near) that cannot work; then all factors
-  // and the sky are scaled to sum to 1, which keeps the near factors' proportions.
+  // and the sky are scaled to sum to 1, which keeps the near factors' proportions. A frame made
+  // from a window (Edit::moveShot) can hold a pixel or so more than the hemisphere: that excess
+  // comes out of the rest too, or the shot would send more than it has (and its take-back,
+  // which sends back what the shot had, would leave the difference in the scene).
   double kept = 0;
   for (const pxpl5::IdFactor& f : factors)
     if (!replaced[f.id]) kept += f.factor;
-  const double sky = std::max(0.0, 1.0 - total);
+  const double sky = std::max(0.0, 1.0 - total), excess = std::max(0.0, total - 1.0);
   glm::dvec3 scale{1}, newScale{1};
   bool renormalised = false;
   for (int c = 0; c < 3 && !replay; ++c) {
-    const double difference = replacedNew[c] - replacedPixels;
+    const double difference = replacedNew[c] - replacedPixels + excess;
     if (kept + sky >= 10 * std::abs(difference)) {
       if (kept + sky > 0) scale[c] = (kept + sky - difference) / (kept + sky);
     } else {
@@ -1415,7 +1418,10 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
   // (windowed_correction.h), which may give an element a pixel more or less than a whole frame
   // where two elements meet: such a pixel stays, negative if need be, so that a move and the move
   // back give back the frame they began with. What is left of an element gone from the window is
-  // rounding. The differences are summed in now's scratch.
+  // rounding. A pixel that the whole frame gave to an unchanged element and the window to a changed
+  // one is then counted twice (the unchanged element keeps it), so the total can exceed 1 by a
+  // pixel or so: distribute keeps the energy all the same. The differences are summed in now's
+  // scratch.
   std::vector<double>& difference = now.pixelFactor;
   if (w) {
     for (const pxpl5::IdFactor& f : w->frame[0].factors)
