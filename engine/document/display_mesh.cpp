@@ -31,27 +31,6 @@ glm::dvec3 middleOfBounds(const MeshedScene& meshed) {
   return 0.5 * (low + high);
 }
 
-// The light a surface meshed again shows until the solver lights it (followMove). Both displays
-// are in one frame.
-void carryRadiance(const SurfaceDisplay& old, SurfaceDisplay& fresh) {
-  if (fresh.positions.size() == old.positions.size()) {
-    fresh.radiance = old.radiance;
-    return;
-  }
-  std::map<std::array<float, 3>, glm::vec3> byPlace;
-  glm::vec3 mean{0};
-  for (size_t v = 0; v < old.positions.size(); ++v) {
-    const glm::vec3& p = old.positions[v];
-    byPlace[{p.x, p.y, p.z}] = old.radiance[v];
-    mean += old.radiance[v] / static_cast<float>(old.positions.size());
-  }
-  for (size_t v = 0; v < fresh.positions.size(); ++v) {
-    const glm::vec3& p = fresh.positions[v];
-    const auto found = byPlace.find({p.x, p.y, p.z});
-    fresh.radiance[v] = found == byPlace.end() ? mean : found->second;
-  }
-}
-
 }  // namespace
 
 size_t DisplayMesh::triangleCount() const {
@@ -133,32 +112,6 @@ void setRadiance(DisplayMesh& mesh, const radiosity::Solver& solver) {
   std::vector<glm::vec3> radiance;
   displayRadiance(solver, radiance);
   CHECK(setRadiance(mesh, radiance));
-}
-
-std::vector<uint32_t> followMove(const MeshedScene& meshed, std::span<const uint32_t> moved,
-                                 std::span<const uint32_t> remeshed, DisplayMesh& mesh) {
-  std::vector<uint32_t> anew(remeshed.begin(), remeshed.end());
-  std::sort(anew.begin(), anew.end());
-  const glm::dmat4 fromWorld = displayFromWorld(mesh);
-  for (uint32_t s : anew) {
-    SurfaceDisplay fresh = surfaceDisplay(meshed.surfaces[s], mesh.surfaces[s].object, fromWorld);
-    carryRadiance(mesh.surfaces[s], fresh);
-    replaceSurface(mesh, s, std::move(fresh));
-  }
-  // A moved surface not meshed again keeps its mesh: only its positions change.
-  for (uint32_t s : moved) {
-    if (std::binary_search(anew.begin(), anew.end(), s)) continue;
-    const std::vector<Vec3>& positions = meshed.surfaces[s].positions;
-    CHECK_EQ(positions.size(), mesh.surfaces[s].positions.size());
-    std::transform(positions.begin(), positions.end(), mesh.surfaces[s].positions.begin(),
-                   [&](const Vec3& p) { return glm::vec3(fromWorld * glm::dvec4(p, 1)); });
-  }
-
-  std::vector<uint32_t> changed = std::move(anew);
-  changed.insert(changed.end(), moved.begin(), moved.end());
-  std::sort(changed.begin(), changed.end());
-  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-  return changed;
 }
 
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {

@@ -65,15 +65,6 @@ bool setRadiance(DisplayMesh& mesh, std::span<const glm::vec3> perVertex);
 // The solver's light (displayRadiance) on the display of the meshes the solver lights.
 void setRadiance(DisplayMesh& mesh, const radiosity::Solver& solver);
 
-// The display after an object moved (the window's drag, `render --move`): its surfaces `moved`
-// take their new positions, and the surfaces `remeshed` (meshed again) their new meshes from
-// `meshed`, with what light they had until the solver has lit them (a surface whose vertex count
-// is unchanged keeps it vertex by vertex; else each vertex takes the light of the old vertex at
-// its place, or the surface's old mean). Returns the surfaces whose display changed (sorted, each
-// once). O(those surfaces).
-std::vector<uint32_t> followMove(const MeshedScene& meshed, std::span<const uint32_t> moved,
-                                 std::span<const uint32_t> remeshed, DisplayMesh& mesh);
-
 // Shades every surface with its emission plus its reflectance times the scene's ambient
 // radiance (the picture before any light is shot); returns that ambient radiance.
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh);

@@ -160,7 +160,12 @@ TEST(SceneRenderer, UpdatingTheChangedSurfacesDrawsWhatUploadingAnewDraws) {
   pose.position += engine::Vec3{-0.3, 0.4, 0.2};
   ASSERT_TRUE(editor.setPose(chair, pose));
   ASSERT_FALSE(editor.remeshed().empty());
-  const std::vector<uint32_t> changed = engine::followMove(editor.meshed(), editor.surfacesOf(chair), editor.remeshed(), mesh);
+  std::vector<uint32_t> changed;
+  for (const engine::EditedSurface& e : editor.takeEdited()) {
+    const uint32_t object = editor.scene().surfaces[e.surface].object;
+    engine::replaceSurface(mesh, e.surface, engine::surfaceDisplay(editor.meshed().surfaces[e.surface], object, engine::displayFromWorld(mesh)));
+    changed.push_back(e.surface);
+  }
   engine::shadeWithAmbient(editor.scene(), mesh);
   EXPECT_THROW(updated.updateRadiance(mesh), std::invalid_argument);  // the floor's vertices are not those uploaded
   updated.updateSurfaces(mesh, changed);

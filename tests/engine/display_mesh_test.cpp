@@ -157,7 +157,12 @@ TEST(DisplayMesh, FollowingMovesSurfaceBySurfaceGivesTheDisplayMadeAnew) {
     const DisplayMesh before = mesh;
     ASSERT_TRUE(editor.setPose(object, pose));
     remeshedMoves += !editor.remeshed().empty();
-    const std::vector<uint32_t> changed = followMove(editor.meshed(), editor.surfacesOf(object), editor.remeshed(), mesh);
+    std::vector<uint32_t> changed;
+    for (const EditedSurface& e : editor.takeEdited()) {
+      const uint32_t owner = editor.scene().surfaces[e.surface].object;
+      replaceSurface(mesh, e.surface, surfaceDisplay(editor.meshed().surfaces[e.surface], owner, displayFromWorld(mesh)));
+      changed.push_back(e.surface);
+    }
     expectSameGeometry(mesh, displayMesh(editor.scene(), editor.meshed(), mesh.origin));
     for (uint32_t s = 0; s < mesh.surfaces.size(); ++s)
       if (!std::binary_search(changed.begin(), changed.end(), s)) {
@@ -166,42 +171,6 @@ TEST(DisplayMesh, FollowingMovesSurfaceBySurfaceGivesTheDisplayMadeAnew) {
       }
   }
   EXPECT_GT(remeshedMoves, 3u);  // footprints changed on the floor often enough
-}
-
-// A surface meshed again keeps what light it can until the solver lights it: the same vertex
-// count keeps it vertex by vertex, other vertices take the light of an old vertex at their place
-// or the surface's old mean; a surface only moved keeps its light.
-TEST(DisplayMesh, FollowingAMoveKeepsTheLight) {
-  const Scene loaded = loadScene(std::string(WALKRAD_ASSETS) + "/office.json");
-  SceneEditor editor(loaded, meshScene(loaded));
-  DisplayMesh mesh = displayMesh(editor.scene(), editor.meshed());
-  uint32_t k = 0;
-  for (SurfaceDisplay& s : mesh.surfaces)
-    for (glm::vec3& r : s.radiance) r = glm::vec3(static_cast<float>(k++ % 7));
-  const uint32_t chair = *editor.findObject("chair");
-  ObjectPose pose = poseOf(editor.scene().objects[chair]);
-  pose.position.y += 0.5;  // off the floor, whose footprint goes
-  ASSERT_TRUE(editor.setPose(chair, pose));
-  ASSERT_FALSE(editor.remeshed().empty());
-  const DisplayMesh before = mesh;
-  followMove(editor.meshed(), editor.surfacesOf(chair), editor.remeshed(), mesh);
-  for (uint32_t s : editor.surfacesOf(chair)) EXPECT_EQ(mesh.surfaces[s].radiance, before.surfaces[s].radiance);
-  for (uint32_t s : editor.remeshed()) {
-    const SurfaceDisplay &now = mesh.surfaces[s], &then = before.surfaces[s];
-    if (now.positions.size() == then.positions.size()) {
-      EXPECT_EQ(now.radiance, then.radiance);
-      continue;
-    }
-    glm::vec3 mean{0};
-    for (const glm::vec3& r : then.radiance) mean += r / static_cast<float>(then.radiance.size());
-    size_t kept = 0;
-    for (size_t v = 0; v < now.positions.size(); ++v) {
-      const auto at = std::find(then.positions.begin(), then.positions.end(), now.positions[v]);
-      kept += at != then.positions.end();
-      EXPECT_EQ(now.radiance[v], at == then.positions.end() ? mean : then.radiance[static_cast<size_t>(at - then.positions.begin())]);
-    }
-    EXPECT_GT(kept, 0u);
-  }
 }
 
 // The lighting snapshots' radiance (one value per display vertex, surface after surface) goes
