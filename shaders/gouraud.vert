@@ -3,11 +3,12 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_radiance;
 
-uniform mat4 u_clipFromDisplay;
+// Clip coordinates from the vertices' (the display's, through their object's transform).
+uniform mat4 u_clipFromObject;
 
 out vec3 v_radiance;
 
 void main() {
-  gl_Position = u_clipFromDisplay * vec4(a_position, 1.0);
+  gl_Position = u_clipFromObject * vec4(a_position, 1.0);
   v_radiance = a_radiance;
 }

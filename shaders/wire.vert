@@ -2,8 +2,9 @@
 // Mesh edges over the shading, as in the thesis' colour plates.
 layout(location = 0) in vec3 a_position;
 
-uniform mat4 u_clipFromDisplay;
+// Clip coordinates from the vertices' (the display's, through their object's transform).
+uniform mat4 u_clipFromObject;
 
 void main() {
-  gl_Position = u_clipFromDisplay * vec4(a_position, 1.0);
+  gl_Position = u_clipFromObject * vec4(a_position, 1.0);
 }

@@ -34,15 +34,15 @@ int runExport(const ExportOptions& options) {
   engine::LitScene document(std::move(loaded), std::move(meshed), settings);
   solveWithProgress(document, options.solve, "export", "solved", start);
   const engine::Scene& scene = document.scene();
-  engine::DisplayMesh mesh = engine::displayMesh(document.meshed());
-  engine::displayRadiance(document.solver(), mesh.radiance);
+  engine::DisplayMesh mesh = engine::displayMesh(scene, document.meshed());
+  engine::setRadiance(mesh, document.solver());
 
   const double exposure = options.exposure.value_or(engine::autoExposure(mesh));
   const std::string bytes = engine::exportGltf(scene, mesh, {.exposure = exposure, .binary = binary});
   writeFileAtomically(options.out, bytes);
   if (!options.solve.quiet)
     std::cout << "walkrad export: " << options.out << ": " << bytes.size() << " bytes, " << mesh.triangleCount()
-              << " triangles, " << mesh.positions.size() << " vertices, exposure " << exposure << std::endl;
+              << " triangles, " << mesh.vertices << " vertices, exposure " << exposure << std::endl;
   return 0;
 }
 

@@ -19,6 +19,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace app {
@@ -95,15 +96,15 @@ int runRender(const RenderOptions& options) {
 
   start = Clock::now();
   engine::MeshedScene meshed = engine::meshScene(loaded);
-  // What the window's thread that draws holds: the objects' poses and the display.
-  engine::SceneView view(loaded, meshed);
+  // For moves, what the window's thread that draws holds: the objects' poses and the display.
+  std::optional<engine::SceneView> view;
+  if (!options.moves.empty()) view.emplace(loaded, meshed);
   const double meshMs = millisecondsSince(start);
-  const engine::ScenePoses& preview = view.poses();
   std::vector<Move> moves;
   try {
     std::vector<engine::Vec3> positions;
-    for (const engine::Object& o : preview.scene().objects) positions.push_back(o.position);
-    for (const std::string& text : options.moves) moves.push_back(parseMove(text, preview, positions));
+    for (const engine::Object& o : loaded.objects) positions.push_back(o.position);
+    for (const std::string& text : options.moves) moves.push_back(parseMove(text, view->poses(), positions));
   } catch (const std::invalid_argument& e) {
     std::cerr << "walkrad render: " << e.what() << "\n";
     return 2;
@@ -116,7 +117,7 @@ int runRender(const RenderOptions& options) {
   const auto solve = [&](const std::string& what) { return solveWithProgress(document, options.solve, "render", what, start); };
   uint64_t shots = solve("solved");
   const double solveMs = millisecondsSince(start);
-  view.take({nullptr, document.takeUpdates(), {}});  // refined and coarsened while solving
+  if (view) view->take({nullptr, document.takeUpdates(), {}});  // refined and coarsened while solving
 
   // Moves go through the window's edit path: the thread that draws moves the object's picture,
   // the document (on the window's lighting thread) cuts, meshes and takes the edit into the light,
@@ -124,10 +125,10 @@ int runRender(const RenderOptions& options) {
   nlohmann::ordered_json moveStats = nlohmann::ordered_json::array();
   for (size_t i = 0; i < moves.size(); ++i) {
     const Move& move = moves[i];
-    engine::ObjectPose pose = preview.pose(move.object);
+    engine::ObjectPose pose = view->poses().pose(move.object);
     pose.position = move.position;
     start = Clock::now();
-    view.setPose(move.object, pose);
+    view->setPose(move.object, pose);
     double uiMs = millisecondsSince(start);
     const auto edit = Clock::now();
     try {
@@ -139,7 +140,7 @@ int runRender(const RenderOptions& options) {
     const double remeshMs = millisecondsSince(edit);
     const engine::LightingUpdate update{nullptr, document.takeUpdates(), {}};
     const auto shown = Clock::now();
-    view.take(update);
+    view->take(update);
     uiMs += millisecondsSince(shown);
     // The first relit solution a display could show.
     const bool first = document.step(options.solve.converge) == engine::SolveStep::kShot;
@@ -150,7 +151,7 @@ int runRender(const RenderOptions& options) {
     size_t changed = 0;
     for (const engine::SurfaceUpdate& u : update.meshes) changed += u.mesh.mesh.elements.size();
     const radiosity::Solver& solver = document.solver();
-    moveStats.push_back({{"object", preview.scene().objects[move.object].name},
+    moveStats.push_back({{"object", view->scene().objects[move.object].name},
                          {"remesh_ms", remeshMs},
                          {"ui_ms", uiMs},
                          {"first_update_ms", firstUpdateMs},
@@ -161,11 +162,10 @@ int runRender(const RenderOptions& options) {
                          {"shots", solver.stats().shots},
                          {"unshot_fraction", solver.unshotFraction()}});
   }
-  view.take({nullptr, document.takeUpdates(), {}});
-  engine::DisplayMesh& mesh = view.display();
-  const radiosity::Solver& solver = document.solver();
-  engine::displayRadiance(solver, mesh.radiance);
   const engine::Scene& scene = document.scene();
+  const radiosity::Solver& solver = document.solver();
+  engine::DisplayMesh mesh = engine::displayMesh(scene, document.meshed());
+  engine::setRadiance(mesh, solver);
 
   start = Clock::now();
   const float exposure = static_cast<float>(options.exposure.value_or(engine::autoExposure(mesh)));
@@ -183,7 +183,7 @@ int runRender(const RenderOptions& options) {
         {"render_ms", renderMs},
         {"patches", solver.patchCount()},
         {"elements", solver.elementCount()},
-        {"vertices", mesh.positions.size()},
+        {"vertices", mesh.vertices},
         {"shots", shots},
         {"unshot_fraction", solver.unshotFraction()},
         {"shots_per_second", solveMs > 0 ? 1000.0 * static_cast<double>(shots) / solveMs : 0.0},

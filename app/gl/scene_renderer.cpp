@@ -1,7 +1,10 @@
 #include "app/gl/scene_renderer.h"
 
+#include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -16,6 +19,30 @@ void uploadBuffer(GLuint buffer, GLenum target, const void* data, size_t bytes) 
   glBufferData(target, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
 }
 
+template <typename T>
+void uploadBuffer(GLuint buffer, GLenum target, const std::vector<T>& values) {
+  uploadBuffer(buffer, target, values.data(), values.size() * sizeof(T));
+}
+
+// The surfaces' per-vertex `values`, one surface after the other.
+void gatherVertices(const engine::DisplayMesh& mesh, std::span<const uint32_t> surfaces,
+                    std::vector<glm::vec3> engine::SurfaceDisplay::*values, std::vector<glm::vec3>& out) {
+  out.clear();
+  for (uint32_t s : surfaces) out.insert(out.end(), (mesh.surfaces[s].*values).begin(), (mesh.surfaces[s].*values).end());
+}
+
+// The surfaces' `indices`, one surface after the other, each moved past the vertices before it.
+void gatherIndices(const engine::DisplayMesh& mesh, std::span<const uint32_t> surfaces,
+                   std::vector<uint32_t> engine::SurfaceDisplay::*indices, std::vector<uint32_t>& out) {
+  out.clear();
+  uint32_t first = 0;
+  for (uint32_t s : surfaces) {
+    const engine::SurfaceDisplay& surface = mesh.surfaces[s];
+    for (uint32_t i : surface.*indices) out.push_back(first + i);
+    first += static_cast<uint32_t>(surface.positions.size());
+  }
+}
+
 // GL rows run bottom-up; images run top-down.
 template <typename T>
 void flipRows(std::vector<T>& pixels, size_t rowLength, int height) {
@@ -27,63 +54,122 @@ void flipRows(std::vector<T>& pixels, size_t rowLength, int height) {
 
 }  // namespace
 
-SceneRenderer::SceneRenderer() {
-  glGenVertexArrays(1, &vao_);
-  GLuint buffers[4];
-  glGenBuffers(4, buffers);
-  positions_ = buffers[0], radiance_ = buffers[1], triangles_ = buffers[2], edges_ = buffers[3];
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, positions_);
-  glEnableVertexAttribArray(kPosition);
-  glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, radiance_);
-  glEnableVertexAttribArray(kRadiance);
-  glVertexAttribPointer(kRadiance, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindVertexArray(0);
-}
+SceneRenderer::SceneRenderer()
+    : shadingClip_(shading_.uniform("u_clipFromObject")), wireClip_(wire_.uniform("u_clipFromObject")) {}
 
-SceneRenderer::~SceneRenderer() {
-  const GLuint buffers[4] = {positions_, radiance_, triangles_, edges_};
-  glDeleteBuffers(4, buffers);
-  glDeleteVertexArrays(1, &vao_);
+SceneRenderer::~SceneRenderer() { release(); }
+
+void SceneRenderer::release() {
+  for (const Chunk& chunk : chunks_) {
+    const GLuint buffers[4] = {chunk.positions, chunk.radiance, chunk.triangles, chunk.edges};
+    glDeleteBuffers(4, buffers);
+    glDeleteVertexArrays(1, &chunk.vao);
+  }
+  chunks_.clear();
 }
 
 void SceneRenderer::upload(const engine::DisplayMesh& mesh) {
-  glBindVertexArray(vao_);
-  uploadBuffer(positions_, GL_ARRAY_BUFFER, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
-  uploadBuffer(radiance_, GL_ARRAY_BUFFER, mesh.radiance.data(), mesh.radiance.size() * sizeof(glm::vec3));
-  glBindVertexArray(0);
-  uploadBuffer(triangles_, GL_ELEMENT_ARRAY_BUFFER, mesh.triangles.data(), mesh.triangles.size() * sizeof(uint32_t));
-  uploadBuffer(edges_, GL_ELEMENT_ARRAY_BUFFER, mesh.edges.data(), mesh.edges.size() * sizeof(uint32_t));
-  triangleIndices_ = static_cast<GLsizei>(mesh.triangles.size());
-  edgeIndices_ = static_cast<GLsizei>(mesh.edges.size());
-  vertices_ = mesh.positions.size();
+  release();
+  chunkOf_.assign(mesh.surfaces.size(), 0);
+  for (ChunkPlan& plan : planChunks(mesh)) {
+    Chunk& chunk = chunks_.emplace_back();
+    chunk.object = plan.object;
+    chunk.surfaces = std::move(plan.surfaces);
+    for (uint32_t s : chunk.surfaces) chunkOf_[s] = static_cast<uint32_t>(chunks_.size() - 1);
+    if (chunk.object >= displayFromObject_.size()) displayFromObject_.resize(chunk.object + 1, glm::mat4{1.0f});
+
+    glGenVertexArrays(1, &chunk.vao);
+    GLuint buffers[4];
+    glGenBuffers(4, buffers);
+    chunk.positions = buffers[0], chunk.radiance = buffers[1], chunk.triangles = buffers[2], chunk.edges = buffers[3];
+    glBindVertexArray(chunk.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, chunk.positions);
+    glEnableVertexAttribArray(kPosition);
+    glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, chunk.radiance);
+    glEnableVertexAttribArray(kRadiance);
+    glVertexAttribPointer(kRadiance, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindVertexArray(0);
+    fill(mesh, chunk);
+  }
 }
 
-void SceneRenderer::replaceVertexData(GLuint buffer, const std::vector<glm::vec3>& values) const {
-  if (values.size() != vertices_) throw std::invalid_argument("vertex data for " + std::to_string(values.size()) +
-                                                              " vertices, the mesh has " + std::to_string(vertices_));
-  glBindBuffer(GL_ARRAY_BUFFER, buffer);
-  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(values.size() * sizeof(glm::vec3)), values.data());
+void SceneRenderer::fill(const engine::DisplayMesh& mesh, Chunk& chunk) {
+  gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::positions, vectors_);
+  chunk.vertices = vectors_.size();
+  chunk.low = glm::vec3{INFINITY}, chunk.high = glm::vec3{-INFINITY};
+  for (const glm::vec3& p : vectors_) chunk.low = glm::min(chunk.low, p), chunk.high = glm::max(chunk.high, p);
+  uploadBuffer(chunk.positions, GL_ARRAY_BUFFER, vectors_);
+  gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
+  uploadBuffer(chunk.radiance, GL_ARRAY_BUFFER, vectors_);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+
+  // Element buffers are the VAO's state.
+  glBindVertexArray(chunk.vao);
+  gatherIndices(mesh, chunk.surfaces, &engine::SurfaceDisplay::triangles, indices_);
+  uploadBuffer(chunk.triangles, GL_ELEMENT_ARRAY_BUFFER, indices_);
+  chunk.triangleIndices = static_cast<GLsizei>(indices_.size());
+  gatherIndices(mesh, chunk.surfaces, &engine::SurfaceDisplay::edges, indices_);
+  uploadBuffer(chunk.edges, GL_ELEMENT_ARRAY_BUFFER, indices_);
+  chunk.edgeIndices = static_cast<GLsizei>(indices_.size());
+  glBindVertexArray(0);
+}
+
+void SceneRenderer::updateSurfaces(const engine::DisplayMesh& mesh, std::span<const uint32_t> surfaces) {
+  std::vector<uint32_t> changed;
+  changed.reserve(surfaces.size());
+  for (uint32_t s : surfaces) changed.push_back(chunkOf_.at(s));
+  std::sort(changed.begin(), changed.end());
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+  for (uint32_t c : changed) fill(mesh, chunks_[c]);
+}
+
+void SceneRenderer::updateRadiance(const engine::DisplayMesh& mesh) {
+  for (const Chunk& chunk : chunks_) {
+    size_t vertices = 0;
+    for (uint32_t s : chunk.surfaces) vertices += mesh.surfaces.at(s).radiance.size();
+    if (vertices != chunk.vertices)
+      throw std::invalid_argument("radiance for " + std::to_string(vertices) + " vertices of a chunk that has " +
+                                  std::to_string(chunk.vertices));
+  }
+  for (const Chunk& chunk : chunks_) {
+    gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
+    glBindBuffer(GL_ARRAY_BUFFER, chunk.radiance);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vectors_.size() * sizeof(glm::vec3)), vectors_.data());
+  }
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void SceneRenderer::updateRadiance(const std::vector<glm::vec3>& radiance) { replaceVertexData(radiance_, radiance); }
+void SceneRenderer::setObjectTransform(uint32_t object, const glm::mat4& displayFromObjectDisplay) {
+  if (object >= displayFromObject_.size()) displayFromObject_.resize(object + 1, glm::mat4{1.0f});
+  displayFromObject_[object] = displayFromObjectDisplay;
+}
 
-void SceneRenderer::updatePositions(const std::vector<glm::vec3>& positions) { replaceVertexData(positions_, positions); }
+glm::mat4 SceneRenderer::clipFromObject(const FrameSettings& frame, uint32_t object) const {
+  return frame.clipFromDisplay * displayFromObject_[object];
+}
 
-void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput) const {
+void SceneRenderer::cull(const FrameSettings& frame) {
+  visible_.assign(chunks_.size(), 0);
+  lastFrame_ = {};
+  for (size_t c = 0; c < chunks_.size(); ++c) {
+    const Chunk& chunk = chunks_[c];
+    if (chunk.vertices == 0) continue;
+    visible_[c] = !outsideView(clipFromObject(frame, chunk.object), chunk.low, chunk.high);
+    ++(visible_[c] ? lastFrame_.chunksDrawn : lastFrame_.chunksCulled);
+  }
+}
+
+void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput) {
+  cull(frame);
   glViewport(0, 0, frame.width, frame.height);
   glClearColor(0, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glUseProgram(shading_.id());
-  glUniformMatrix4fv(shading_.uniform("u_clipFromDisplay"), 1, GL_FALSE, glm::value_ptr(frame.clipFromDisplay));
   glUniform1f(shading_.uniform("u_exposure"), frame.exposure);
   glUniform1i(shading_.uniform("u_linearOutput"), linearOutput ? 1 : 0);
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles_);
 
   // Faces are one-sided, and their backs are not drawn: a walker outside a room sees into it
   // (a doll's house view) instead of a black wall, and silhouettes get no black seams where a
@@ -92,32 +178,43 @@ void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput)
   glCullFace(GL_BACK);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1, 1);  // keeps the wireframe in front of its own triangles
-  glDrawElements(GL_TRIANGLES, triangleIndices_, GL_UNSIGNED_INT, nullptr);
+  for (size_t c = 0; c < chunks_.size(); ++c) {
+    if (!visible_[c]) continue;
+    const Chunk& chunk = chunks_[c];
+    glUniformMatrix4fv(shadingClip_, 1, GL_FALSE, glm::value_ptr(clipFromObject(frame, chunk.object)));
+    glBindVertexArray(chunk.vao);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.triangles);
+    glDrawElements(GL_TRIANGLES, chunk.triangleIndices, GL_UNSIGNED_INT, nullptr);
+  }
   glDisable(GL_CULL_FACE);
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-void SceneRenderer::draw(const FrameSettings& frame) const {
+void SceneRenderer::draw(const FrameSettings& frame) {
   drawTriangles(frame, false);
-  if ((frame.wireframe || !frame.highlight.empty()) && edgeIndices_ > 0) {
+  if (frame.wireframe || frame.highlight) {
     glUseProgram(wire_.id());
-    glUniformMatrix4fv(wire_.uniform("u_clipFromDisplay"), 1, GL_FALSE, glm::value_ptr(frame.clipFromDisplay));
     glDepthFunc(GL_LEQUAL);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edges_);
-    if (frame.wireframe) {
-      glUniform4f(wire_.uniform("u_color"), 1, 1, 1, 1);
-      glDrawElements(GL_LINES, edgeIndices_, GL_UNSIGNED_INT, nullptr);
-    }
-    glUniform4f(wire_.uniform("u_color"), 1, 0.8f, 0.1f, 1);
-    for (const auto& [first, end] : frame.highlight)
-      glDrawElements(GL_LINES, static_cast<GLsizei>(end - first), GL_UNSIGNED_INT,
-                     reinterpret_cast<const void*>(static_cast<uintptr_t>(first) * sizeof(uint32_t)));
+    // The highlight after the whole wireframe, so that no white edge covers it.
+    const auto drawEdges = [&](bool selectedOnly, glm::vec3 colour) {
+      glUniform4f(wire_.uniform("u_color"), colour.r, colour.g, colour.b, 1);
+      for (size_t c = 0; c < chunks_.size(); ++c) {
+        const Chunk& chunk = chunks_[c];
+        if (!visible_[c] || (selectedOnly && chunk.object != *frame.highlight)) continue;
+        glUniformMatrix4fv(wireClip_, 1, GL_FALSE, glm::value_ptr(clipFromObject(frame, chunk.object)));
+        glBindVertexArray(chunk.vao);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.edges);
+        glDrawElements(GL_LINES, chunk.edgeIndices, GL_UNSIGNED_INT, nullptr);
+      }
+    };
+    if (frame.wireframe) drawEdges(false, glm::vec3{1});
+    if (frame.highlight) drawEdges(true, glm::vec3{1, 0.8f, 0.1f});
   }
   glBindVertexArray(0);
   glUseProgram(0);
 }
 
-ImageRgbF SceneRenderer::drawLinear(const FrameSettings& frame) const {
+ImageRgbF SceneRenderer::drawLinear(const FrameSettings& frame) {
   GLint previous = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
   GLuint target = 0, color = 0, depth = 0;

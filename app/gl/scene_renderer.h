@@ -1,15 +1,23 @@
 // Draws a DisplayMesh with the shaders of shaders/: Gouraud-shaded radiance, optionally the
 // mesh edges over it. One code path for the GLFW window and the OSMesa image. Needs a current
 // GL 3.3 core context whose functions glad has loaded.
+//
+// The mesh lives on the GPU in chunks (display_chunks.h): surfaces of one object, each chunk with
+// buffers and bounds of its own. A surface meshed again re-uploads its chunk only, an object
+// moves by a transform of its own without any upload, and a chunk wholly outside the view is not
+// drawn.
 #pragma once
 
+#include "app/gl/display_chunks.h"
 #include "app/gl/gl_program.h"
 #include "app/image/image.h"
 #include "engine/document/display_mesh.h"
 
 #include <glm/mat4x4.hpp>
 
-#include <utility>
+#include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 namespace app {
@@ -19,9 +27,14 @@ struct FrameSettings {
   int width = 640, height = 480;
   float exposure = 1;
   bool wireframe = false;
-  // Index ranges [first, end) of the mesh's edge list drawn in the highlight colour whether or
-  // not the wireframe is on: the selected object.
-  std::vector<std::pair<uint32_t, uint32_t>> highlight;
+  // The selected object: its element edges are drawn in the highlight colour whether or not the
+  // wireframe is on.
+  std::optional<uint32_t> highlight;
+};
+
+// What the last frame drew: chunks within the view, and chunks left out as wholly outside it.
+struct FrameCounts {
+  size_t chunksDrawn = 0, chunksCulled = 0;
 };
 
 class SceneRenderer {
@@ -31,29 +44,57 @@ class SceneRenderer {
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;
 
-  // Replaces the mesh on the GPU.
+  // Replaces the mesh on the GPU, cut into chunks anew. Object transforms set stay.
   void upload(const engine::DisplayMesh& mesh);
-  // Replaces the vertex radiance only (a new lighting snapshot); one value per uploaded vertex.
-  void updateRadiance(const std::vector<glm::vec3>& radiance);
-  // Replaces the vertex positions only (an object moved; same mesh).
-  void updatePositions(const std::vector<glm::vec3>& positions);
+  // Uploads again the chunks that hold `surfaces` of `mesh` (the mesh uploaded, with those
+  // surfaces changed: moved, or meshed again with other vertices). The chunks stay as they were
+  // cut.
+  void updateSurfaces(const engine::DisplayMesh& mesh, std::span<const uint32_t> surfaces);
+  // Replaces the vertex radiance only (a new lighting snapshot) of the mesh uploaded. Throws
+  // std::invalid_argument, changing nothing, when a surface's vertex count is not the one uploaded.
+  void updateRadiance(const engine::DisplayMesh& mesh);
+  // Draws `object`'s surfaces through `displayFromObjectDisplay` (display coordinates from its
+  // vertices'): identity until set, kept across uploads.
+  void setObjectTransform(uint32_t object, const glm::mat4& displayFromObjectDisplay);
 
   // Draws into the bound framebuffer: tone-mapped sRGB colour, the wireframe when asked.
-  void draw(const FrameSettings& frame) const;
+  void draw(const FrameSettings& frame);
 
   // Draws linear radiance (no wireframe, no tone mapping) into an offscreen float target and
   // reads it back; the bound framebuffer is left as it was.
-  ImageRgbF drawLinear(const FrameSettings& frame) const;
+  ImageRgbF drawLinear(const FrameSettings& frame);
+
+  const FrameCounts& lastFrame() const { return lastFrame_; }
+  size_t chunkCount() const { return chunks_.size(); }
 
  private:
-  void drawTriangles(const FrameSettings& frame, bool linearOutput) const;
-  void replaceVertexData(GLuint buffer, const std::vector<glm::vec3>& values) const;
+  struct Chunk {
+    uint32_t object = 0;
+    std::vector<uint32_t> surfaces;
+    GLuint vao = 0, positions = 0, radiance = 0, triangles = 0, edges = 0;
+    GLsizei triangleIndices = 0, edgeIndices = 0;
+    size_t vertices = 0;
+    glm::vec3 low{0}, high{0};  // the bounds of its positions (before its object's transform)
+  };
+
+  void fill(const engine::DisplayMesh& mesh, Chunk& chunk);
+  void release();
+  glm::mat4 clipFromObject(const FrameSettings& frame, uint32_t object) const;
+  // Which chunks the frame draws (visible_), counted in lastFrame_.
+  void cull(const FrameSettings& frame);
+  void drawTriangles(const FrameSettings& frame, bool linearOutput);
 
   GlProgram shading_{"gouraud.vert", "gouraud.frag"};
   GlProgram wire_{"wire.vert", "wire.frag"};
-  GLuint vao_ = 0, positions_ = 0, radiance_ = 0, triangles_ = 0, edges_ = 0;
-  GLsizei triangleIndices_ = 0, edgeIndices_ = 0;
-  size_t vertices_ = 0;
+  GLint shadingClip_ = -1, wireClip_ = -1;
+  std::vector<Chunk> chunks_;
+  std::vector<uint32_t> chunkOf_;  // per surface
+  std::vector<glm::mat4> displayFromObject_;
+  std::vector<uint8_t> visible_;  // per chunk, in the frame being drawn
+  FrameCounts lastFrame_;
+  // Scratch for assembling a chunk's buffers, kept from chunk to chunk.
+  std::vector<glm::vec3> vectors_;
+  std::vector<uint32_t> indices_;
 };
 
 // Reads the bound framebuffer's `buffer` (GL_BACK, GL_FRONT, GL_COLOR_ATTACHMENT0) as RGB8, top

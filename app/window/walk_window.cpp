@@ -197,6 +197,7 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 struct ViewRecord {
   FrameTimes frames;
   size_t elements = 0, vertices = 0;
+  FrameCounts chunks;  // of the last frame
   uint64_t shots = 0;
   double unshotFraction = 1;
 };
@@ -209,6 +210,8 @@ void writeViewStats(const std::string& path, const ViewRecord& record) {
       {"frame_ms_max", record.frames.quantile(1)},
       {"elements", record.elements},
       {"vertices", record.vertices},
+      {"chunks_drawn", record.chunks.chunksDrawn},
+      {"chunks_culled", record.chunks.chunksCulled},
       {"shots", record.shots},
       {"unshot_fraction", record.unshotFraction},
       {"peak_rss_mb", peakResidentMegabytes()},
@@ -279,9 +282,10 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     if (pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL) || panel.undoRequested) edits.undo();
     if (pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL) || panel.redoRequested) edits.redo();
     // An object moved in the view: the picture follows at once, the document is asked for the pose.
-    const auto poses = edits.takePosesToSend();
-    for (const auto& [object, pose] : poses) lighting.requestPose(object, pose);
-    if (!poses.empty()) renderer.updatePositions(mesh.positions);
+    for (const auto& [object, pose] : edits.takePosesToSend()) {
+      lighting.requestPose(object, pose);
+      renderer.setObjectTransform(object, glm::mat4(edits.view().objectTransform(object)));
+    }
     if (pressed(GLFW_KEY_S, GLFW_MOD_CONTROL) || panel.saveRequested) {
       panel.saveReport = edits.save();
       std::cout << "walkrad view: " << panel.saveReport << std::endl;
@@ -295,8 +299,9 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     // What the document did since the last frame: meshes, refusals, light.
     const engine::LightingUpdate update = lighting.take();
     const engine::SceneView::Taken taken = edits.take(update);
-    if (taken.geometry) renderer.upload(mesh);
-    else if (taken.radiance) renderer.updateRadiance(mesh.radiance);
+    if (!taken.surfaces.empty()) renderer.updateSurfaces(mesh, taken.surfaces);
+    if (taken.radiance) renderer.updateRadiance(mesh);
+    for (uint32_t object : taken.movedBack) renderer.setObjectTransform(object, glm::mat4(edits.view().objectTransform(object)));
     if (update.snapshot != shown) {
       shown = update.snapshot;
       progress.report(*shown);
@@ -342,9 +347,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       settings.height = height;
       settings.exposure = panel.exposure;
       settings.wireframe = panel.wireframe;
-      if (const auto selected = edits.drag().selected())
-        for (uint32_t s : edits.view().poses().surfacesOf(*selected))
-          settings.highlight.push_back({mesh.surfaceEdgeStart[s], mesh.surfaceEdgeStart[s + 1]});
+      settings.highlight = edits.drag().selected();
       renderer.draw(settings);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
@@ -380,7 +383,8 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     glfwSwapBuffers(window);
     record.frames.add(1000 * (glfwGetTime() - frameStart));
     record.elements = mesh.elements;
-    record.vertices = mesh.positions.size();
+    record.vertices = mesh.vertices;
+    record.chunks = renderer.lastFrame();
     record.shots = shown->shots;
     record.unshotFraction = shown->unshotFraction;
     if (options.frames > 0 && frame >= options.frames) break;

@@ -1,16 +1,16 @@
 #include "engine/document/display_mesh.h"
 
+#include "engine/document/lighting.h"
 #include "engine/geometry/surface_mesh.h"
 #include "radiosity/ambient.h"
 #include "util/check.h"
 
-#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <map>
-#include <set>
 #include <utility>
 
 namespace engine {
@@ -19,102 +19,99 @@ namespace {
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
+glm::dvec3 middleOfBounds(const MeshedScene& meshed) {
+  bool first = true;
+  glm::dvec3 low{0}, high{0};
+  for (const SurfaceMesh& surfaceMesh : meshed.surfaces)
+    for (const Vec3& p : surfaceMesh.positions) {
+      low = first ? p : glm::min(low, p);
+      high = first ? p : glm::max(high, p);
+      first = false;
+    }
+  return 0.5 * (low + high);
+}
+
 }  // namespace
 
-DisplayMesh displayMesh(const MeshedScene& meshed, std::optional<glm::dvec3> origin) {
-  DisplayMesh mesh;
-  if (origin) {
-    mesh.origin = *origin;
-  } else {
-    bool first = true;
-    glm::dvec3 low{0}, high{0};
-    for (const SurfaceMesh& surfaceMesh : meshed.surfaces)
-      for (const Vec3& p : surfaceMesh.positions) {
-        low = first ? p : glm::min(low, p);
-        high = first ? p : glm::max(high, p);
-        first = false;
-      }
-    mesh.origin = 0.5 * (low + high);
-  }
-  for (const SurfaceMesh& surfaceMesh : meshed.surfaces) {
-    const mesher::Mesh& patches = surfaceMesh.mesh;
-    const auto first = static_cast<uint32_t>(mesh.positions.size());
-    mesh.surfaceVertexStart.push_back(first);
-    mesh.surfaceEdgeStart.push_back(static_cast<uint32_t>(mesh.edges.size()));
-    for (const Vec3& p : surfaceMesh.positions) {
-      mesh.positions.emplace_back(p - mesh.origin);
-      mesh.radiance.emplace_back(0.0f);
-      mesh.area.push_back(0);
-    }
+size_t DisplayMesh::triangleCount() const {
+  size_t count = 0;
+  for (const SurfaceDisplay& s : surfaces) count += s.triangles.size() / 3;
+  return count;
+}
 
-    // GL draws triangles: quads are split along a diagonal; the wireframe shows element edges.
-    std::set<std::pair<uint32_t, uint32_t>> edges;
-    for (const auto& element : patches.elements) {
-      const size_t n = element[3] == mesher::Mesh::kNone ? 3 : 4;
-      double area = 0;
-      for (size_t k = 0; k < n; ++k)
-        area += 0.5 * mesher::orient2(patches.vertices[element[0]], patches.vertices[element[k]], patches.vertices[element[(k + 1) % n]]);
-      for (size_t k = 0; k < n; ++k) {
-        mesh.area[first + element[k]] += static_cast<float>(area / static_cast<double>(n));
-        edges.insert(std::minmax(first + element[k], first + element[(k + 1) % n]));
-      }
-      for (size_t k = 1; k + 1 < n; ++k)
-        for (uint32_t corner : {element[0], element[k], element[k + 1]}) mesh.triangles.push_back(first + corner);
-      ++mesh.elements;
-      mesh.quads += n == 4;
+glm::dmat4 displayFromWorld(const DisplayMesh& mesh) { return glm::translate(glm::dmat4{1.0}, -mesh.origin); }
+
+SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const glm::dmat4& displayFromWorld) {
+  const mesher::Mesh& patches = meshed.mesh;
+  SurfaceDisplay display;
+  display.object = object;
+  display.positions.reserve(meshed.positions.size());
+  for (const Vec3& p : meshed.positions) display.positions.emplace_back(displayFromWorld * glm::dvec4(p, 1));
+  display.radiance.assign(meshed.positions.size(), glm::vec3{0});
+  display.area.assign(meshed.positions.size(), 0);
+
+  // GL draws triangles: quads are split along a diagonal; the wireframe shows element edges, each
+  // once (an inner edge is in two elements).
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  edges.reserve(4 * patches.elements.size());
+  display.triangles.reserve(6 * patches.elements.size());
+  for (const auto& element : patches.elements) {
+    const size_t n = element[3] == mesher::Mesh::kNone ? 3 : 4;
+    double area = 0;
+    for (size_t k = 0; k < n; ++k)
+      area += 0.5 * mesher::orient2(patches.vertices[element[0]], patches.vertices[element[k]], patches.vertices[element[(k + 1) % n]]);
+    for (size_t k = 0; k < n; ++k) {
+      display.area[element[k]] += static_cast<float>(area / static_cast<double>(n));
+      edges.push_back(std::minmax(element[k], element[(k + 1) % n]));
     }
-    for (const auto& [a, b] : edges) {
-      mesh.edges.push_back(a);
-      mesh.edges.push_back(b);
-    }
+    for (size_t k = 1; k + 1 < n; ++k)
+      for (uint32_t corner : {element[0], element[k], element[k + 1]}) display.triangles.push_back(corner);
+    ++display.elements;
+    display.quads += n == 4;
   }
-  mesh.surfaceVertexStart.push_back(static_cast<uint32_t>(mesh.positions.size()));
-  mesh.surfaceEdgeStart.push_back(static_cast<uint32_t>(mesh.edges.size()));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  display.edges.reserve(2 * edges.size());
+  for (const auto& [a, b] : edges) display.edges.insert(display.edges.end(), {a, b});
+  return display;
+}
+
+DisplayMesh displayMesh(const Scene& scene, const MeshedScene& meshed, std::optional<glm::dvec3> origin) {
+  CHECK_EQ(scene.surfaces.size(), meshed.surfaces.size());
+  DisplayMesh mesh;
+  mesh.origin = origin ? *origin : middleOfBounds(meshed);
+  const glm::dmat4 fromWorld = displayFromWorld(mesh);
+  mesh.surfaces.reserve(meshed.surfaces.size());
+  for (size_t s = 0; s < meshed.surfaces.size(); ++s) {
+    mesh.surfaces.push_back(surfaceDisplay(meshed.surfaces[s], scene.surfaces[s].object, fromWorld));
+    mesh.elements += mesh.surfaces.back().elements;
+    mesh.quads += mesh.surfaces.back().quads;
+    mesh.vertices += mesh.surfaces.back().positions.size();
+  }
   return mesh;
 }
 
-void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh) {
-  DCHECK(old.origin == fresh.origin);
-  const size_t surfaces = std::min(old.surfaceVertexStart.size(), fresh.surfaceVertexStart.size()) - 1;
-  for (size_t s = 0; s < surfaces; ++s) {
-    const uint32_t oldFirst = old.surfaceVertexStart[s], oldEnd = old.surfaceVertexStart[s + 1];
-    const uint32_t first = fresh.surfaceVertexStart[s], end = fresh.surfaceVertexStart[s + 1];
-    if (end - first == oldEnd - oldFirst) {
-      std::copy(old.radiance.begin() + oldFirst, old.radiance.begin() + oldEnd, fresh.radiance.begin() + first);
-      continue;
-    }
-    std::map<std::array<float, 3>, glm::vec3> byPlace;
-    glm::vec3 mean{0};
-    for (uint32_t v = oldFirst; v < oldEnd; ++v) {
-      const glm::vec3& p = old.positions[v];
-      byPlace[{p.x, p.y, p.z}] = old.radiance[v];
-      mean += old.radiance[v] / static_cast<float>(oldEnd - oldFirst);
-    }
-    for (uint32_t v = first; v < end; ++v) {
-      const glm::vec3& p = fresh.positions[v];
-      const auto found = byPlace.find({p.x, p.y, p.z});
-      fresh.radiance[v] = found == byPlace.end() ? mean : found->second;
-    }
-  }
+void replaceSurface(DisplayMesh& mesh, uint32_t surface, SurfaceDisplay display) {
+  SurfaceDisplay& old = mesh.surfaces.at(surface);
+  mesh.elements += display.elements - old.elements;
+  mesh.quads += display.quads - old.quads;
+  mesh.vertices += display.positions.size() - old.positions.size();
+  old = std::move(display);
 }
 
-void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh) {
-  for (uint32_t s : surfaces) {
-    const std::vector<Vec3>& positions = meshed.surfaces[s].positions;
-    std::transform(positions.begin(), positions.end(), mesh.positions.begin() + mesh.surfaceVertexStart[s],
-                   [&](const Vec3& p) { return glm::vec3(p - mesh.origin); });
+bool setRadiance(DisplayMesh& mesh, std::span<const glm::vec3> perVertex) {
+  if (perVertex.size() != mesh.vertices) return false;
+  for (SurfaceDisplay& s : mesh.surfaces) {
+    std::copy_n(perVertex.begin(), s.radiance.size(), s.radiance.begin());
+    perVertex = perVertex.subspan(s.radiance.size());
   }
-}
-
-bool followMove(const MeshedScene& meshed, const std::vector<uint32_t>& moved, bool rebuild, DisplayMesh& mesh) {
-  if (!rebuild) {
-    updatePositions(meshed, moved, mesh);
-    return false;
-  }
-  DisplayMesh fresh = displayMesh(meshed, mesh.origin);
-  carryRadiance(mesh, fresh);
-  mesh = std::move(fresh);
   return true;
+}
+
+void setRadiance(DisplayMesh& mesh, const radiosity::Solver& solver) {
+  std::vector<glm::vec3> radiance;
+  displayRadiance(solver, radiance);
+  CHECK(setRadiance(mesh, radiance));
 }
 
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {
@@ -127,19 +124,19 @@ glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {
   const glm::dvec3 ambient = radiosity::ambientRadiance(lights);
   for (size_t i = 0; i < scene.surfaces.size(); ++i) {
     const Material& m = scene.materials[scene.surfaces[i].material];
-    const glm::vec3 radiance{m.emission + m.reflectance * ambient};
-    std::fill(mesh.radiance.begin() + mesh.surfaceVertexStart[i], mesh.radiance.begin() + mesh.surfaceVertexStart[i + 1], radiance);
+    std::fill(mesh.surfaces[i].radiance.begin(), mesh.surfaces[i].radiance.end(), glm::vec3{m.emission + m.reflectance * ambient});
   }
   return ambient;
 }
 
 double autoExposure(const DisplayMesh& mesh, double key) {
   double logSum = 0, areaSum = 0;
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    const double a = mesh.area[i];
-    logSum += a * std::log(1e-4 + luminance(mesh.radiance[i]));
-    areaSum += a;
-  }
+  for (const SurfaceDisplay& s : mesh.surfaces)
+    for (size_t v = 0; v < s.positions.size(); ++v) {
+      const double a = s.area[v];
+      logSum += a * std::log(1e-4 + luminance(s.radiance[v]));
+      areaSum += a;
+    }
   if (areaSum <= 0) return 1;
   return key / std::exp(logSum / areaSum);
 }

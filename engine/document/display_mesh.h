@@ -1,58 +1,69 @@
 // What the display draws: triangles with per-vertex linear radiance (Gouraud shading), and the
-// element edges for the wireframe. The radiance comes from the radiosity solver (lighting.h);
-// before any light is shot it is "emission plus reflectance under the ambient term" of
-// radiosity/ambient.h.
+// element edges for the wireframe, held surface by surface so that a surface meshed again is
+// replaced on its own. The radiance comes from the radiosity solver (lighting.h); before any
+// light is shot it is "emission plus reflectance under the ambient term" of radiosity/ambient.h.
 #pragma once
 
 #include "engine/geometry/meshed_scene.h"
 #include "engine/scene.h"
+#include "radiosity/radiosity.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace engine {
 
-struct DisplayMesh {
-  // Positions are world coordinates less `origin` (the middle of the meshes' bounds): float keeps
-  // a room 900 km from the world's origin to 6 cm, and to a micrometre about its own middle.
-  glm::dvec3 origin{0};
-  std::vector<glm::vec3> positions;  // per vertex, world coordinates less `origin`
+// One surface's display: its mesh's vertices in the mesh's order (the surface's own points first,
+// outer ring then holes, at their exact coordinates), and indices local to the surface.
+struct SurfaceDisplay {
+  uint32_t object = 0;               // the object the surface belongs to (Scene::surfaces[s].object)
+  std::vector<glm::vec3> positions;  // per vertex, display coordinates (DisplayMesh::origin)
   std::vector<glm::vec3> radiance;   // per vertex, linear RGB
-  std::vector<float> area;           // per vertex: a third of the area of its triangles
+  std::vector<float> area;           // per vertex: its share of its elements' areas (an n-gon's over n)
   std::vector<uint32_t> triangles;   // 3 indices per triangle, counter-clockwise from the front
-  std::vector<uint32_t> edges;       // 2 indices per element edge
+  std::vector<uint32_t> edges;       // 2 indices per element edge, each edge once
   size_t elements = 0, quads = 0;    // mesh elements (quads are drawn as two triangles)
-  // Surface i owns vertices [surfaceVertexStart[i], surfaceVertexStart[i + 1]); each block starts
-  // with the surface's own points (outer ring, then holes) at their exact coordinates.
-  std::vector<uint32_t> surfaceVertexStart;
-  // Surface i's element edges are the index pairs in edges[surfaceEdgeStart[i], surfaceEdgeStart[i + 1]).
-  std::vector<uint32_t> surfaceEdgeStart;
-
-  size_t triangleCount() const { return triangles.size() / 3; }
 };
 
-// The display's geometry of meshed surfaces (radiance left 0): quads split into two triangles,
-// each element edge once. Its origin is the middle of the meshes' bounds unless given (a rebuild
-// that carries another mesh's radiance keeps that mesh's origin: carryRadiance).
-DisplayMesh displayMesh(const MeshedScene& meshed, std::optional<glm::dvec3> origin = {});
+struct DisplayMesh {
+  // Display coordinates are world coordinates less `origin` (the middle of the meshes' bounds):
+  // float keeps a room 900 km from the world's origin to 6 cm, and to a micrometre about its own
+  // middle.
+  glm::dvec3 origin{0};
+  std::vector<SurfaceDisplay> surfaces;  // per Scene::surfaces, in order
+  // Over all surfaces, kept by displayMesh and replaceSurface (read every frame: not summed).
+  size_t elements = 0, quads = 0, vertices = 0;
 
-// Radiance for `fresh`, rebuilt from the same surfaces after some were meshed again, until the
-// solver has lit it: a surface whose vertex count is unchanged keeps its radiance vertex by
-// vertex; a remeshed one gives each vertex the radiance of an old vertex at the same place, or
-// the surface's old mean where there is none. Both meshes have the same origin.
-void carryRadiance(const DisplayMesh& old, DisplayMesh& fresh);
+  size_t triangleCount() const;  // summed over the surfaces
+};
 
-// Copies the positions of `surfaces` from `meshed` (after they moved; same meshes), less mesh.origin.
-void updatePositions(const MeshedScene& meshed, const std::vector<uint32_t>& surfaces, DisplayMesh& mesh);
+// The display's geometry of meshed surfaces of `scene` (radiance left 0): quads split into two
+// triangles, each element edge once. Its origin is the middle of the meshes' bounds unless given.
+DisplayMesh displayMesh(const Scene& scene, const MeshedScene& meshed, std::optional<glm::dvec3> origin = {});
 
-// The display after an object moved (the window's drag, `render --move`): its surfaces `moved`
-// take their new positions, or, when `rebuild` (some surface was meshed again), the display is
-// made anew from `meshed` with the light it had carried over (carryRadiance). Returns whether it
-// was made anew (all of it to upload) rather than moved (positions only).
-bool followMove(const MeshedScene& meshed, const std::vector<uint32_t>& moved, bool rebuild, DisplayMesh& mesh);
+// Display coordinates from world coordinates for `mesh` as built: less its origin.
+glm::dmat4 displayFromWorld(const DisplayMesh& mesh);
+
+// One surface's display from its mesh, its vertices put through `displayFromWorld` (the mesh's
+// own, or another frame's: an object shown through a transform of its own), radiance left 0.
+// O(the surface's mesh).
+SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const glm::dmat4& displayFromWorld);
+
+// Puts `display` in the place of surface `surface` (its vertex count may differ), keeping the
+// mesh's counts.
+void replaceSurface(DisplayMesh& mesh, uint32_t surface, SurfaceDisplay display);
+
+// The radiance of the lighting snapshots (displayRadiance): per display vertex, surface after
+// surface, each in its mesh's vertex order. Returns false and changes nothing when its length is
+// not the mesh's vertex count (the light of other meshes).
+bool setRadiance(DisplayMesh& mesh, std::span<const glm::vec3> perVertex);
+// The solver's light (displayRadiance) on the display of the meshes the solver lights.
+void setRadiance(DisplayMesh& mesh, const radiosity::Solver& solver);
 
 // Shades every surface with its emission plus its reflectance times the scene's ambient
 // radiance (the picture before any light is shot); returns that ambient radiance.

@@ -107,17 +107,9 @@ std::string exportGltf(const Scene& scene, const DisplayMesh& mesh, const GltfEx
          {"extensions", {{"KHR_materials_unlit", Json::object()}}},
          {"extras", {{"reflectance", vec3(m.reflectance)}, {"emission", vec3(m.emission)}}}});
 
-  // Surfaces by object, then by material; each surface's triangles (DisplayMesh keeps them in
-  // surface order, so they are runs).
+  // Surfaces by object, then by material.
   std::map<uint32_t, std::map<uint32_t, std::vector<uint32_t>>> groups;
   for (uint32_t s = 0; s < scene.surfaces.size(); ++s) groups[scene.surfaces[s].object][scene.surfaces[s].material].push_back(s);
-  std::vector<size_t> triangleStart(scene.surfaces.size() + 1, 0);
-  size_t run = 0;
-  for (size_t s = 0; s < scene.surfaces.size(); ++s) {
-    triangleStart[s] = run;
-    while (run < mesh.triangleCount() && mesh.triangles[3 * run] < mesh.surfaceVertexStart[s + 1]) ++run;
-  }
-  triangleStart.back() = run;
 
   BinaryBuilder bin;
   const float scale = static_cast<float>(scene.metersPerUnit);
@@ -128,11 +120,11 @@ std::string exportGltf(const Scene& scene, const DisplayMesh& mesh, const GltfEx
       std::vector<uint32_t> indices;
       glm::vec3 lo(INFINITY), hi(-INFINITY);
       for (uint32_t s : surfaces) {
-        const uint32_t first = mesh.surfaceVertexStart[s], end = mesh.surfaceVertexStart[s + 1];
+        const SurfaceDisplay& display = mesh.surfaces[s];
         const auto base = static_cast<uint32_t>(positions.size() / 3);
         const glm::vec3 normal(scene.surfaces[s].normal);
-        for (uint32_t v = first; v < end; ++v) {
-          const glm::vec3 p = mesh.positions[v] * scale, r = mesh.radiance[v];
+        for (size_t v = 0; v < display.positions.size(); ++v) {
+          const glm::vec3 p = display.positions[v] * scale, r = display.radiance[v];
           const glm::vec3 c = glm::clamp(r * static_cast<float>(settings.exposure), 0.0f, 1.0f);
           lo = glm::min(lo, p);
           hi = glm::max(hi, p);
@@ -141,8 +133,7 @@ std::string exportGltf(const Scene& scene, const DisplayMesh& mesh, const GltfEx
           colors.insert(colors.end(), {c.r, c.g, c.b});
           radiance.insert(radiance.end(), {r.r, r.g, r.b});
         }
-        for (size_t t = triangleStart[s]; t < triangleStart[s + 1]; ++t)
-          for (int k = 0; k < 3; ++k) indices.push_back(mesh.triangles[3 * t + k] - first + base);
+        for (uint32_t corner : display.triangles) indices.push_back(corner + base);
       }
       if (indices.empty()) continue;
       const size_t count = positions.size() / 3;

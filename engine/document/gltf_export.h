@@ -17,7 +17,7 @@ struct GltfExportSettings {
   bool binary = true;  // .glb; otherwise .gltf text with the buffer inside as base64
 };
 
-// The file's bytes. `mesh` is the scene's DisplayMesh (one block of vertices per surface, in
+// The file's bytes. `mesh` is the scene's DisplayMesh (one display per surface, in
 // Scene::surfaces order) with its radiance set. One node and one mesh per object that has
 // surfaces, named after it; one primitive per material the object uses, named after it; one
 // glTF material per scene material, unlit, with baseColorFactor 1 so COLOR_0 is the colour

@@ -46,7 +46,7 @@ Coverage coverage(const ImageRgb8& image) {
 // benchmark, not a test).
 ImageRgb8 renderAmbient(const engine::Scene& scene, int width, int height) {
   const engine::MeshedScene meshed = engine::meshScene(scene);
-  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  engine::DisplayMesh mesh = engine::displayMesh(scene, meshed);
   engine::shadeWithAmbient(scene, mesh);
   ViewCamera camera;
   EXPECT_TRUE(chooseCamera(scene, "", camera));

@@ -39,14 +39,14 @@ std::vector<GoldenCase> loadCases() {
 ImageRgb8 renderSolved(const GoldenCase& c) {
   const engine::Scene scene = engine::loadScene(std::string(WALKRAD_ASSETS) + "/" + c.scene);
   const engine::MeshedScene meshed = engine::meshScene(scene);
-  engine::DisplayMesh mesh = engine::displayMesh(meshed);
+  engine::DisplayMesh mesh = engine::displayMesh(scene, meshed);
   radiosity::SolverSettings settings;
   settings.graphicsProcessors = 2;  // the machine's two cores; the pictures do not depend on it
   settings.overshoot = true;       // as the application solves
   radiosity::Solver solver(engine::radiosityInput(scene, meshed), settings);
   engine::solveTo(solver, c.converge, UINT64_MAX);
   EXPECT_LE(solver.unshotFraction(), c.converge);
-  engine::displayRadiance(solver, mesh.radiance);
+  engine::setRadiance(mesh, solver);
   ViewCamera camera;
   EXPECT_TRUE(chooseCamera(scene, c.camera, camera));
   return renderHeadless(scene, mesh, camera, c.width, c.height, static_cast<float>(engine::autoExposure(mesh)), false, false).color;

@@ -17,7 +17,7 @@ namespace {
 engine::Scene loadAsset(const char* name) { return engine::loadScene(std::string(WALKRAD_ASSETS) + "/" + name); }
 
 HeadlessImages render(const engine::Scene& scene, int width, int height, bool wireframe = false, bool linear = false) {
-  engine::DisplayMesh mesh = engine::displayMesh(engine::meshScene(scene));
+  engine::DisplayMesh mesh = engine::displayMesh(scene, engine::meshScene(scene));
   engine::shadeWithAmbient(scene, mesh);
   ViewCamera camera;
   EXPECT_TRUE(chooseCamera(scene, "", camera));

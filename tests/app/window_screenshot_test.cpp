@@ -47,6 +47,9 @@ TEST(WindowScreenshot, StatsCountTheFramesAndTheMemory) {
   EXPECT_LE(p95, most);
   EXPECT_GT(stats.at("elements").get<double>(), 100);  // the Cornell box meshed at its patch size
   EXPECT_GT(stats.at("vertices").get<double>(), stats.at("elements").get<double>());
+  // The camera sees into the whole box: every chunk (one for each of its three objects) drawn.
+  EXPECT_EQ(stats.at("chunks_drawn").get<int>(), 3);
+  EXPECT_EQ(stats.at("chunks_culled").get<int>(), 0);
   EXPECT_GT(stats.at("peak_rss_mb").get<double>(), 10);
   EXPECT_LT(stats.at("peak_rss_mb").get<double>(), 4096);
 }

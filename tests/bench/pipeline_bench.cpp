@@ -43,10 +43,10 @@ void placeholderDisplay(benchmark::State& state) {
   const engine::Scene scene = engine::parseScene(assetText(name), name);
   size_t triangles = 0;
   for (auto _ : state) {
-    engine::DisplayMesh mesh = engine::displayMesh(engine::meshScene(scene));
+    engine::DisplayMesh mesh = engine::displayMesh(scene, engine::meshScene(scene));
     engine::shadeWithAmbient(scene, mesh);
     triangles = mesh.triangleCount();
-    benchmark::DoNotOptimize(mesh.triangles.data());
+    benchmark::DoNotOptimize(mesh.surfaces.data());
   }
   state.SetLabel(name);
   state.counters["triangles"] = static_cast<double>(triangles);
@@ -58,7 +58,7 @@ void headlessFrame(benchmark::State& state) {
   const char* name = kScenes[state.range(0)];
   const int width = 640, height = 480;
   const engine::Scene scene = engine::parseScene(assetText(name), name);
-  engine::DisplayMesh mesh = engine::displayMesh(engine::meshScene(scene));
+  engine::DisplayMesh mesh = engine::displayMesh(scene, engine::meshScene(scene));
   engine::shadeWithAmbient(scene, mesh);
   const app::OsmesaContext context(width, height);
   if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&app::OsmesaContext::procAddress)))

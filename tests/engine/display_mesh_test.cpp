@@ -7,46 +7,46 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 namespace engine {
 namespace {
 
 // Triangles of every surface of every shipped scene cover exactly the surface's area, face the
-// surface's front, lie in its plane, and keep the surface's own points exactly.
+// surface's front, lie in its plane, and keep the surface's own points exactly; each surface's
+// display names its object.
 TEST(DisplayMesh, TrianglesTileEverySurface) {
   for (const char* name : {"cornell.json", "office.json", "kitchen.json", "furnace.json"}) {
     SCOPED_TRACE(name);
     const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/" + name);
-    const DisplayMesh mesh = displayMesh(meshScene(scene));
-    ASSERT_EQ(mesh.surfaceVertexStart.size(), scene.surfaces.size() + 1);
-    std::vector<double> areaOf(scene.surfaces.size(), 0);
-    std::vector<uint32_t> surfaceOf(mesh.positions.size());
+    const DisplayMesh mesh = displayMesh(scene, meshScene(scene));
+    ASSERT_EQ(mesh.surfaces.size(), scene.surfaces.size());
+    double vertexArea = 0, surfaceArea = 0;
     for (uint32_t i = 0; i < scene.surfaces.size(); ++i) {
       const Surface& s = scene.surfaces[i];
-      uint32_t v = mesh.surfaceVertexStart[i];
-      for (uint32_t k = v; k < mesh.surfaceVertexStart[i + 1]; ++k) {
-        surfaceOf[k] = i;
-        EXPECT_NEAR(glm::dot(mesh.origin + glm::dvec3(mesh.positions[k]), s.normal), s.planeOffset(), 1e-4 * (1 + std::abs(s.planeOffset())));
-      }
-      for (const Vec3& p : s.outer) EXPECT_EQ(mesh.positions[v++], glm::vec3(p - mesh.origin));
+      const SurfaceDisplay& display = mesh.surfaces[i];
+      EXPECT_EQ(display.object, s.object);
+      for (const glm::vec3& p : display.positions)
+        EXPECT_NEAR(glm::dot(mesh.origin + glm::dvec3(p), s.normal), s.planeOffset(), 1e-4 * (1 + std::abs(s.planeOffset())));
+      size_t v = 0;
+      for (const Vec3& p : s.outer) EXPECT_EQ(display.positions[v++], glm::vec3(p - mesh.origin));
       for (const Ring3& h : s.holes)
-        for (const Vec3& p : h) EXPECT_EQ(mesh.positions[v++], glm::vec3(p - mesh.origin));
+        for (const Vec3& p : h) EXPECT_EQ(display.positions[v++], glm::vec3(p - mesh.origin));
+      double area = 0;
+      for (size_t t = 0; t < display.triangles.size(); t += 3) {
+        const glm::dvec3 a{display.positions.at(display.triangles[t])}, b{display.positions.at(display.triangles[t + 1])},
+            c{display.positions.at(display.triangles[t + 2])};
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        // Never backward; a boundary sliver (an edge passing a grid corner closely: thesis figure
+        // 5.9 a) may have no area left in float positions.
+        EXPECT_GE(glm::dot(n, s.normal), 0);
+        area += 0.5 * glm::length(n);
+      }
+      EXPECT_NEAR(area, s.area, 1e-4 * s.area) << s.face;  // float positions
+      for (float a : display.area) vertexArea += a;
+      surfaceArea += s.area;
     }
-    for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
-      const glm::dvec3 a{mesh.positions[mesh.triangles[t]]}, b{mesh.positions[mesh.triangles[t + 1]]},
-          c{mesh.positions[mesh.triangles[t + 2]]};
-      const uint32_t surface = surfaceOf[mesh.triangles[t]];
-      EXPECT_EQ(surfaceOf[mesh.triangles[t + 1]], surface);
-      const glm::dvec3 n = glm::cross(b - a, c - a);
-      // Never backward; a boundary sliver (an edge passing a grid corner closely: thesis figure
-      // 5.9 a) may have no area left in float positions.
-      EXPECT_GE(glm::dot(n, scene.surfaces[surface].normal), 0);
-      areaOf[surface] += 0.5 * glm::length(n);
-    }
-    for (uint32_t i = 0; i < scene.surfaces.size(); ++i)
-      EXPECT_NEAR(areaOf[i], scene.surfaces[i].area, 1e-4 * scene.surfaces[i].area) << scene.surfaces[i].face;  // float positions
-    double vertexArea = 0, surfaceArea = 0;
-    for (float a : mesh.area) vertexArea += a;
-    for (const Surface& s : scene.surfaces) surfaceArea += s.area;
     EXPECT_NEAR(vertexArea, surfaceArea, 1e-5 * surfaceArea);
   }
 }
@@ -57,21 +57,23 @@ TEST(DisplayMesh, ElementsAreNoLargerThanThePatchSize) {
   Json j = test::sceneWithSolid({{"profile", {{0, 0}, {3, 0}, {3, 1.2}, {0, 1.2}}}, {"from", 0}, {"to", 2}, {"material", "white"}});
   j["settings"]["patch_size"] = 0.4;
   const Scene scene = test::parse(j);
-  const DisplayMesh mesh = displayMesh(meshScene(scene));
-  for (size_t e = 0; e < mesh.edges.size(); e += 2) {
-    const glm::vec3 d = mesh.positions[mesh.edges[e + 1]] - mesh.positions[mesh.edges[e]];
-    EXPECT_LE(std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}), 0.4f + 1e-6f);
-  }
+  const DisplayMesh mesh = displayMesh(scene, meshScene(scene));
+  for (const SurfaceDisplay& s : mesh.surfaces)
+    for (size_t e = 0; e < s.edges.size(); e += 2) {
+      const glm::vec3 d = s.positions[s.edges[e + 1]] - s.positions[s.edges[e]];
+      EXPECT_LE(std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}), 0.4f + 1e-6f);
+    }
 }
 
 TEST(DisplayMesh, PlaceholderShadingIsEmissionPlusReflectedAmbient) {
   const Scene scene = test::parse(test::baseScene());
-  DisplayMesh mesh = displayMesh(meshScene(scene));
+  DisplayMesh mesh = displayMesh(scene, meshScene(scene));
   const glm::dvec3 ambient = shadeWithAmbient(scene, mesh);
   EXPECT_GT(ambient.x, 0);
   // Lamp: emission 4 + 0.5 ambient; walls: 0.5 ambient.
   float brightest = 0, darkest = 1e9f;
-  for (const glm::vec3& r : mesh.radiance) brightest = std::max(brightest, r.x), darkest = std::min(darkest, r.x);
+  for (const SurfaceDisplay& s : mesh.surfaces)
+    for (const glm::vec3& r : s.radiance) brightest = std::max(brightest, r.x), darkest = std::min(darkest, r.x);
   EXPECT_NEAR(brightest, 4 + 0.5 * ambient.x, 1e-5);
   EXPECT_NEAR(darkest, 0.5 * ambient.x, 1e-5);
 }
@@ -79,12 +81,13 @@ TEST(DisplayMesh, PlaceholderShadingIsEmissionPlusReflectedAmbient) {
 TEST(DisplayMesh, QuadsAreTwoTrianglesAndEachEdgeIsDrawnOnce) {
   const Scene scene = test::parse(test::sceneWithSolid(
       {{"profile", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, {"from", 0}, {"to", 1}, {"material", "white"}}));
-  const DisplayMesh mesh = displayMesh(meshScene(scene));
+  const DisplayMesh mesh = displayMesh(scene, meshScene(scene));
   // Patch size 0.5: each face of the unit cube is 2 x 2 quads with 12 edges.
   EXPECT_EQ(mesh.elements, 6u * 4);
   EXPECT_EQ(mesh.quads, 6u * 4);
   EXPECT_EQ(mesh.triangleCount(), 6u * 8);
-  EXPECT_EQ(mesh.edges.size(), 2u * 6 * 12);
+  EXPECT_EQ(mesh.vertices, 6u * 9);
+  for (const SurfaceDisplay& s : mesh.surfaces) EXPECT_EQ(s.edges.size(), 2u * 12);
 }
 
 // The display's float positions are about the meshes' middle, so a room 900 km out keeps its
@@ -92,66 +95,106 @@ TEST(DisplayMesh, QuadsAreTwoTrianglesAndEachEdgeIsDrawnOnce) {
 TEST(DisplayMesh, PositionsAreAboutTheMiddleOfTheMeshes) {
   const Scene scene = loadScene(std::string(WALKRAD_SOURCE) + "/tests/cli/far_room_box.json");
   const MeshedScene meshed = meshScene(scene);
-  const DisplayMesh mesh = displayMesh(meshed);
+  const DisplayMesh mesh = displayMesh(scene, meshed);
   EXPECT_NEAR(mesh.origin.x, 900000.5, 1e-9);
   EXPECT_NEAR(mesh.origin.z, 900000.5, 1e-9);
-  size_t v = 0;
-  for (const SurfaceMesh& s : meshed.surfaces)
-    for (const Vec3& p : s.positions) {
-      EXPECT_LE(glm::length(glm::dvec3(mesh.positions[v])), 1.0);
-      EXPECT_LT(glm::length(mesh.origin + glm::dvec3(mesh.positions[v++]) - p), 1e-6);
+  for (size_t s = 0; s < meshed.surfaces.size(); ++s) {
+    ASSERT_EQ(mesh.surfaces[s].positions.size(), meshed.surfaces[s].positions.size());
+    for (size_t v = 0; v < meshed.surfaces[s].positions.size(); ++v) {
+      const glm::vec3& p = mesh.surfaces[s].positions[v];
+      EXPECT_LE(glm::length(glm::dvec3(p)), 1.0);
+      EXPECT_LT(glm::length(mesh.origin + glm::dvec3(p) - meshed.surfaces[s].positions[v]), 1e-6);
     }
-  EXPECT_EQ(v, mesh.positions.size());
-  // A rebuild may keep an origin given, for carryRadiance.
-  EXPECT_EQ(displayMesh(meshed, glm::dvec3{1, 2, 3}).positions[0], glm::vec3(meshed.surfaces[0].positions[0] - glm::dvec3{1, 2, 3}));
+  }
+  // A display may be made about an origin given.
+  EXPECT_EQ(displayMesh(scene, meshed, glm::dvec3{1, 2, 3}).surfaces[0].positions[0],
+            glm::vec3(meshed.surfaces[0].positions[0] - glm::dvec3{1, 2, 3}));
 }
 
-// A moved object's display follows it: made anew with the light carried over when a surface was
-// meshed again (the floor, as the chair leaves it), by positions only (the chair's, nothing
-// else's) when none was (the chair lifted further).
-TEST(DisplayMesh, FollowsAMoveAnewOrByPositions) {
+// Two displays of one scene are the same, surface by surface, but for the radiance.
+void expectSameGeometry(const DisplayMesh& a, const DisplayMesh& b) {
+  EXPECT_EQ(a.origin, b.origin);
+  EXPECT_EQ(a.elements, b.elements);
+  EXPECT_EQ(a.quads, b.quads);
+  EXPECT_EQ(a.vertices, b.vertices);
+  ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
+  for (size_t s = 0; s < a.surfaces.size(); ++s) {
+    SCOPED_TRACE(s);
+    EXPECT_EQ(a.surfaces[s].object, b.surfaces[s].object);
+    EXPECT_EQ(a.surfaces[s].positions, b.surfaces[s].positions);
+    EXPECT_EQ(a.surfaces[s].area, b.surfaces[s].area);
+    EXPECT_EQ(a.surfaces[s].triangles, b.surfaces[s].triangles);
+    EXPECT_EQ(a.surfaces[s].edges, b.surfaces[s].edges);
+    EXPECT_EQ(a.surfaces[s].elements, b.surfaces[s].elements);
+    EXPECT_EQ(a.surfaces[s].quads, b.surfaces[s].quads);
+    EXPECT_EQ(a.surfaces[s].radiance.size(), b.surfaces[s].positions.size());
+  }
+}
+
+// Random moves of the office's movable objects, each followed surface by surface (the moved
+// object's surfaces, and those meshed again around changed footprints): the display is then the
+// one made anew from the edited meshes, and only the surfaces followed changed.
+TEST(DisplayMesh, FollowingMovesSurfaceBySurfaceGivesTheDisplayMadeAnew) {
   const Scene loaded = loadScene(std::string(WALKRAD_ASSETS) + "/office.json");
   SceneEditor editor(loaded, meshScene(loaded));
-  DisplayMesh mesh = displayMesh(editor.meshed());
-  for (size_t v = 0; v < mesh.radiance.size(); ++v) mesh.radiance[v] = glm::vec3(static_cast<float>(v % 7));
-  const uint32_t chair = *editor.findObject("chair");
-  std::vector<uint8_t> ofChair(editor.scene().surfaces.size(), 0);
-  for (uint32_t s : editor.surfacesOf(chair)) ofChair[s] = 1;
-  ObjectPose pose = poseOf(editor.scene().objects[chair]);
+  DisplayMesh mesh = displayMesh(editor.scene(), editor.meshed());
+  std::vector<uint32_t> movable;
+  for (uint32_t o = 0; o < editor.scene().objects.size(); ++o)
+    if (editor.scene().objects[o].movable) movable.push_back(o);
+  ASSERT_GE(movable.size(), 2u);
 
-  pose.position.y += 0.5;  // off the floor, whose footprint goes
-  ASSERT_TRUE(editor.setPose(chair, pose));
-  ASSERT_FALSE(editor.remeshed().empty());
-  DisplayMesh before = mesh;
-  EXPECT_TRUE(followMove(editor.meshed(), editor.surfacesOf(chair), true, mesh));
-  EXPECT_EQ(mesh.origin, before.origin);
-  std::vector<uint8_t> remeshed(ofChair.size(), 0);
-  for (uint32_t s : editor.remeshed()) remeshed[s] = 1;
-  for (uint32_t s = 0; s < ofChair.size(); ++s)
-    if (!remeshed[s] && !ofChair[s])  // the same vertices, each with its light
-      for (uint32_t v = mesh.surfaceVertexStart[s]; v < mesh.surfaceVertexStart[s + 1]; ++v) {
-        EXPECT_EQ(mesh.positions[v], before.positions[v - mesh.surfaceVertexStart[s] + before.surfaceVertexStart[s]]);
-        EXPECT_EQ(mesh.radiance[v], before.radiance[v - mesh.surfaceVertexStart[s] + before.surfaceVertexStart[s]]);
-      }
-
-  pose.position.y += 0.3;  // higher still: no footprint changes
-  ASSERT_TRUE(editor.setPose(chair, pose));
-  ASSERT_TRUE(editor.remeshed().empty());
-  before = mesh;
-  EXPECT_FALSE(followMove(editor.meshed(), editor.surfacesOf(chair), false, mesh));
-  for (uint32_t s = 0; s < ofChair.size(); ++s)
-    for (uint32_t v = mesh.surfaceVertexStart[s]; v < mesh.surfaceVertexStart[s + 1]; ++v) {
-      if (ofChair[s]) EXPECT_NEAR(mesh.positions[v].y, before.positions[v].y + 0.3f, 1e-5);
-      else EXPECT_EQ(mesh.positions[v], before.positions[v]);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> step(-0.4, 0.4), unit(0, 1);
+  size_t remeshedMoves = 0;
+  for (int move = 0; move < 12; ++move) {
+    SCOPED_TRACE(move);
+    const uint32_t object = movable[static_cast<size_t>(move) % movable.size()];
+    // Along the floor, now and then lifted off it (and back: its footprint goes and comes).
+    ObjectPose pose = poseOf(editor.scene().objects[object]);
+    pose.position += Vec3{step(random), 0, step(random)};
+    pose.position.y = loaded.objects[object].position.y + (unit(random) < 0.3 ? 0.2 * unit(random) : 0.0);
+    pose.rotateYDeg += unit(random) < 0.5 ? 15 : 0;
+    const DisplayMesh before = mesh;
+    ASSERT_TRUE(editor.setPose(object, pose));
+    remeshedMoves += !editor.remeshed().empty();
+    std::vector<uint32_t> changed;
+    for (const EditedSurface& e : editor.takeEdited()) {
+      const uint32_t owner = editor.scene().surfaces[e.surface].object;
+      replaceSurface(mesh, e.surface, surfaceDisplay(editor.meshed().surfaces[e.surface], owner, displayFromWorld(mesh)));
+      changed.push_back(e.surface);
     }
-  EXPECT_EQ(mesh.radiance, before.radiance);
+    expectSameGeometry(mesh, displayMesh(editor.scene(), editor.meshed(), mesh.origin));
+    for (uint32_t s = 0; s < mesh.surfaces.size(); ++s)
+      if (!std::binary_search(changed.begin(), changed.end(), s)) {
+        EXPECT_EQ(mesh.surfaces[s].positions, before.surfaces[s].positions);
+        EXPECT_EQ(mesh.surfaces[s].radiance, before.surfaces[s].radiance);
+      }
+  }
+  EXPECT_GT(remeshedMoves, 3u);  // footprints changed on the floor often enough
+}
+
+// The lighting snapshots' radiance (one value per display vertex, surface after surface) goes
+// onto the surfaces in order; a snapshot of other meshes (another vertex count) is refused.
+TEST(DisplayMesh, FlatRadianceGoesOntoTheSurfacesInOrder) {
+  const Scene scene = test::parse(test::baseScene());
+  DisplayMesh mesh = displayMesh(scene, meshScene(scene));
+  std::vector<glm::vec3> flat(mesh.vertices);
+  for (size_t v = 0; v < flat.size(); ++v) flat[v] = glm::vec3(static_cast<float>(v));
+  ASSERT_TRUE(setRadiance(mesh, flat));
+  size_t v = 0;
+  for (const SurfaceDisplay& s : mesh.surfaces)
+    for (const glm::vec3& r : s.radiance) EXPECT_EQ(r, flat[v++]);
+  flat.emplace_back(-1.0f);
+  EXPECT_FALSE(setRadiance(mesh, flat));
+  EXPECT_EQ(mesh.surfaces.back().radiance.back(), flat[flat.size() - 2]);
 }
 
 TEST(DisplayMesh, AutoExposureMapsTheLogAverageToTheKey) {
   DisplayMesh mesh;
-  mesh.positions.assign(2, glm::vec3{0});
-  mesh.radiance = {glm::vec3{2}, glm::vec3{2}};
-  mesh.area = {1, 1};
+  SurfaceDisplay& s = mesh.surfaces.emplace_back();
+  s.positions.assign(2, glm::vec3{0});
+  s.radiance = {glm::vec3{2}, glm::vec3{2}};
+  s.area = {1, 1};
   EXPECT_NEAR(autoExposure(mesh, 0.25) * (2 + 1e-4), 0.25, 1e-9);
   EXPECT_EQ(autoExposure(DisplayMesh{}), 1);
 }

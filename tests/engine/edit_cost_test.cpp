@@ -79,7 +79,7 @@ TEST(EditCost, AMoveOnAMillionElementsTouchesOnlyTheBoxAndItsTile) {
   ASSERT_TRUE(view.setPose(box, pose));
   std::vector<SurfaceUpdate> updates;
   for (uint32_t s : expected) updates.push_back({s, editor.meshed().surfaces[s], pose});
-  EXPECT_TRUE(view.take({nullptr, updates, {}}).geometry);
+  EXPECT_EQ(view.take({nullptr, updates, {}}).surfaces, expected);
   EXPECT_EQ(view.display().elements, elements - meshed.surfaces[tileIndex].mesh.elements.size() +
                                          editor.meshed().surfaces[tileIndex].mesh.elements.size());
 }

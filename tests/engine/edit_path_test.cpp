@@ -139,9 +139,10 @@ TEST(EditPath, TheDisplayAfterAMoveHasNoNegativeLight) {
         for (int c = 0; c < 3; ++c) lowest = std::min(lowest, r[c]), highest = std::max(highest, r[c]);
   }
   EXPECT_GE(lowest, -1e-9 * highest);
-  DisplayMesh mesh = displayMesh(editor.meshed());
-  displayRadiance(*solver, mesh.radiance);
-  for (const glm::vec3& r : mesh.radiance) ASSERT_TRUE(r.x >= 0 && r.y >= 0 && r.z >= 0) << r.x << " " << r.y << " " << r.z;
+  DisplayMesh mesh = displayMesh(editor.scene(), editor.meshed());
+  setRadiance(mesh, *solver);
+  for (const SurfaceDisplay& s : mesh.surfaces)
+    for (const glm::vec3& r : s.radiance) ASSERT_TRUE(r.x >= 0 && r.y >= 0 && r.z >= 0) << r.x << " " << r.y << " " << r.z;
   const double exposure = autoExposure(mesh);
   EXPECT_TRUE(std::isfinite(exposure) && exposure > 0) << exposure;
 }

@@ -30,10 +30,10 @@ const Lit& litCornell() {
   static const Lit lit = [] {
     Lit out{loadScene(std::string(WALKRAD_ASSETS) + "/cornell.json"), {}};
     const MeshedScene meshed = meshScene(out.scene);
-    out.mesh = displayMesh(meshed);
+    out.mesh = displayMesh(out.scene, meshed);
     radiosity::Solver solver(radiosityInput(out.scene, meshed));
     solveTo(solver, 0.2, 200);
-    displayRadiance(solver, out.mesh.radiance);
+    setRadiance(out.mesh, solver);
     return out;
   }();
   return lit;
@@ -86,17 +86,15 @@ TEST(GltfExport, RoundTripKeepsObjectsTrianglesAreasAndColours) {
   for (uint32_t s = 0; s < scene.surfaces.size(); ++s) {
     const std::string& object = scene.objects[scene.surfaces[s].object].name;
     expectedArea[object] += scene.surfaces[s].area * scene.metersPerUnit * scene.metersPerUnit;
-    for (uint32_t v = lit.mesh.surfaceVertexStart[s]; v < lit.mesh.surfaceVertexStart[s + 1]; ++v)
+    const SurfaceDisplay& display = lit.mesh.surfaces[s];
+    for (size_t v = 0; v < display.positions.size(); ++v)
       expectedColour[object].insert(
-          {keyOf(lit.mesh.positions[v] * scale), glm::clamp(lit.mesh.radiance[v] * static_cast<float>(exposure), 0.0f, 1.0f)});
-  }
-  for (size_t t = 0; t < lit.mesh.triangleCount(); ++t) {
-    const uint32_t first = lit.mesh.triangles[3 * t];
-    const uint32_t s = static_cast<uint32_t>(std::upper_bound(lit.mesh.surfaceVertexStart.begin(), lit.mesh.surfaceVertexStart.end(), first) -
-                                             lit.mesh.surfaceVertexStart.begin()) - 1;
-    std::array<Key, 3> corners;
-    for (int k = 0; k < 3; ++k) corners[k] = keyOf(lit.mesh.positions[lit.mesh.triangles[3 * t + k]] * scale);
-    expectedTriangles[scene.objects[scene.surfaces[s].object].name].insert(corners);
+          {keyOf(display.positions[v] * scale), glm::clamp(display.radiance[v] * static_cast<float>(exposure), 0.0f, 1.0f)});
+    for (size_t t = 0; t < display.triangles.size(); t += 3) {
+      std::array<Key, 3> corners;
+      for (int k = 0; k < 3; ++k) corners[k] = keyOf(display.positions[display.triangles[t + k]] * scale);
+      expectedTriangles[object].insert(corners);
+    }
   }
 
   ASSERT_EQ(model.nodes.size(), scene.objects.size());
@@ -199,7 +197,7 @@ TEST(GltfExport, GlbContainerIsWellFormed) {
 TEST(GltfExport, EmptySceneIsStillValid) {
   Scene scene;
   scene.materials.push_back({});
-  const DisplayMesh mesh = displayMesh(MeshedScene{});
+  const DisplayMesh mesh = displayMesh(scene, MeshedScene{});
   // Nothing to require but the version: glTF forbids empty arrays, so there are no nodes.
   const tinygltf::Model model = read(exportGltf(scene, mesh), true, tinygltf::REQUIRE_VERSION);
   EXPECT_TRUE(model.nodes.empty());

@@ -62,13 +62,13 @@ LightingUpdate takeUntil(LightingThread& lighting, SceneView* view, Ready ready)
 TEST(Lighting, SnapshotsMatchASolveOnThisThreadShotForShot) {
   const Scene scene = loadAsset("cornell.json");
   const MeshedScene meshed = meshScene(scene);
-  const DisplayMesh display = displayMesh(meshed);
+  const DisplayMesh display = displayMesh(scene, meshed);
   LightingSettings settings;
   settings.converge = 0.05;
   LightingThread lighting(scene, meshed, settings);
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first, nullptr);
-  EXPECT_EQ(first->radiance.size(), display.positions.size());
+  EXPECT_EQ(first->radiance.size(), display.vertices);
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.converged; });
   EXPECT_GT(done->version, first->version);
   EXPECT_LE(done->unshotFraction, 0.05);
@@ -208,7 +208,7 @@ TEST(Lighting, AdaptiveUpdatesCarryTheirMeshes) {
   const size_t loadedElements = view.display().elements;
   const LightingUpdate first = lighting.take();
   EXPECT_TRUE(view.take(first).radiance);
-  const auto matches = [&](const LightingSnapshot& s) { return s.radiance.size() == view.display().positions.size(); };
+  const auto matches = [&](const LightingSnapshot& s) { return s.radiance.size() == view.display().vertices; };
   EXPECT_TRUE(matches(*first.snapshot));
   const LightingUpdate done = takeUntil(lighting, &view, [&](const LightingSnapshot& s) {
     EXPECT_TRUE(matches(s));

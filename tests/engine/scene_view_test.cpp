@@ -28,18 +28,28 @@ struct Pair {
   LitScene document{scene, meshed, coarse()};
 };
 
-// The view's display is the document's, vertex for vertex (positions to float rounding) and
-// element for element.
-void expectSameDisplay(const DisplayMesh& view, const MeshedScene& document) {
-  const DisplayMesh fresh = displayMesh(document, view.origin);
-  ASSERT_EQ(view.positions.size(), fresh.positions.size());
-  EXPECT_EQ(view.triangles, fresh.triangles);
-  EXPECT_EQ(view.surfaceVertexStart, fresh.surfaceVertexStart);
-  for (size_t v = 0; v < fresh.positions.size(); ++v)
-    EXPECT_LT(glm::length(view.positions[v] - fresh.positions[v]), 1e-5f) << "vertex " << v;
+// Surface s's display vertices where the view shows them: through its object's transform.
+std::vector<glm::vec3> shown(const SceneView& view, uint32_t s) {
+  const SurfaceDisplay& display = view.display().surfaces[s];
+  const glm::dmat4 transform = view.objectTransform(display.object);
+  std::vector<glm::vec3> positions;
+  for (const glm::vec3& p : display.positions) positions.emplace_back(transform * glm::dvec4(p, 1));
+  return positions;
 }
 
-TEST(SceneView, AMoveShowsAtOnceAndMovesOnlyTheObject) {
+// The view shows surface s as the document has it, vertex for vertex (to float rounding) and
+// element for element.
+void expectShownAsTheDocumentHasIt(const SceneView& view, const LitScene& document, uint32_t s) {
+  const DisplayMesh fresh = displayMesh(document.scene(), document.meshed(), view.display().origin);
+  EXPECT_EQ(view.display().surfaces[s].triangles, fresh.surfaces[s].triangles) << "surface " << s;
+  const std::vector<glm::vec3> positions = shown(view, s);
+  ASSERT_EQ(positions.size(), fresh.surfaces[s].positions.size()) << "surface " << s;
+  for (size_t v = 0; v < positions.size(); ++v)
+    EXPECT_LT(glm::length(positions[v] - fresh.surfaces[s].positions[v]), 1e-5f) << "surface " << s << ", vertex " << v;
+}
+
+// A move changes the object's transform and its surfaces for picking, and no display vertex.
+TEST(SceneView, AMoveShowsAtOnceThroughTheObjectsTransform) {
   Pair pair;
   SceneView& view = pair.view;
   const uint32_t box = *view.poses().findObject("box");
@@ -48,16 +58,17 @@ TEST(SceneView, AMoveShowsAtOnceAndMovesOnlyTheObject) {
   ASSERT_TRUE(view.setPose(box, pose));
   EXPECT_EQ(view.poses().pose(box), pose);
   const RigidMotion motion = view.poses().motionTo(box, pose);
-  const DisplayMesh& after = view.display();
-  ASSERT_EQ(after.positions.size(), before.positions.size());
-  for (uint32_t s = 0; s < view.scene().surfaces.size(); ++s)
-    for (uint32_t v = before.surfaceVertexStart[s]; v < before.surfaceVertexStart[s + 1]; ++v) {
-      const bool ofBox = view.scene().surfaces[s].object == box;
-      const glm::dvec3 loaded = glm::dvec3(before.positions[v]) + before.origin;
-      const glm::vec3 expected = ofBox ? glm::vec3(motion.place(loaded) - after.origin) : before.positions[v];
-      if (ofBox) EXPECT_LT(glm::length(after.positions[v] - expected), 1e-5f);
-      else EXPECT_EQ(after.positions[v], expected);
+  for (uint32_t s = 0; s < view.scene().surfaces.size(); ++s) {
+    EXPECT_EQ(view.display().surfaces[s].positions, before.surfaces[s].positions);
+    const bool ofBox = view.scene().surfaces[s].object == box;
+    const std::vector<glm::vec3> positions = shown(view, s);
+    for (size_t v = 0; v < positions.size(); ++v) {
+      const glm::dvec3 loaded = glm::dvec3(before.surfaces[s].positions[v]) + before.origin;
+      const glm::vec3 expected(ofBox ? motion.place(loaded) - before.origin : loaded - before.origin);
+      EXPECT_LT(glm::length(positions[v] - expected), 1e-5f) << "surface " << s << ", vertex " << v;
     }
+  }
+  EXPECT_EQ(view.objectTransform(*view.poses().findObject("room")), glm::dmat4{1.0});
   // Picking sees the box where it is shown: its surfaces moved, without cut-outs.
   for (uint32_t s : view.poses().surfacesOf(box))
     EXPECT_EQ(view.scene().surfaces[s].outer[0], motion.place(pair.scene.surfaces[s].outer[0]));
@@ -77,8 +88,8 @@ TEST(SceneView, TheDocumentsUpdatesMakeTheViewItsDisplay) {
     expected.push_back(static_cast<uint32_t>(&test::surfaceOf(pair.document.scene(), "room", "bottom") - pair.document.scene().surfaces.data()));
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(surfaces, expected);
-    EXPECT_TRUE(pair.view.take({nullptr, updates, {}}).geometry);
-    expectSameDisplay(pair.view.display(), pair.document.meshed());
+    EXPECT_EQ(pair.view.take({nullptr, updates, {}}).surfaces, expected);
+    for (uint32_t s = 0; s < pair.scene.surfaces.size(); ++s) expectShownAsTheDocumentHasIt(pair.view, pair.document, s);
   }
   EXPECT_TRUE(pair.document.takeUpdates().empty());
 }
@@ -95,20 +106,13 @@ TEST(SceneView, AnUpdateForAnOlderPoseIsShownAtTheNewest) {
   pair.view.take({nullptr, pair.document.takeUpdates(), {}});
   pair.document.setPose(box, newest);
   // The box is shown where the document now has it (its floor comes with the newest pose's update).
-  const DisplayMesh& shown = pair.view.display();
-  const DisplayMesh fresh = displayMesh(pair.document.meshed(), shown.origin);
-  for (uint32_t s : pair.view.poses().surfacesOf(box)) {
-    ASSERT_EQ(shown.surfaceVertexStart[s + 1] - shown.surfaceVertexStart[s], fresh.surfaceVertexStart[s + 1] - fresh.surfaceVertexStart[s]);
-    for (uint32_t k = 0; k < shown.surfaceVertexStart[s + 1] - shown.surfaceVertexStart[s]; ++k)
-      EXPECT_LT(glm::length(shown.positions[shown.surfaceVertexStart[s] + k] - fresh.positions[fresh.surfaceVertexStart[s] + k]), 1e-5f);
-  }
+  for (uint32_t s : pair.view.poses().surfacesOf(box)) expectShownAsTheDocumentHasIt(pair.view, pair.document, s);
 }
 
 TEST(SceneView, ARefusalPutsTheObjectBackUnlessItMovedAgain) {
   Pair pair;
   SceneView& view = pair.view;
   const uint32_t box = *view.poses().findObject("box");
-  const DisplayMesh loaded = view.display();
   const ObjectPose refused{Vec3{0.5, 0, 0.75}, 0}, later{Vec3{0.25, 0, 0}, 0};
   view.setPose(box, refused);
   view.setPose(box, later);
@@ -118,10 +122,8 @@ TEST(SceneView, ARefusalPutsTheObjectBackUnlessItMovedAgain) {
   EXPECT_EQ(view.poses().pose(box), later);
   taken = view.take({nullptr, {}, {PoseRefusal{box, later, ObjectPose{}, "no"}}});
   EXPECT_EQ(taken.movedBack, std::vector<uint32_t>{box});
-  EXPECT_TRUE(taken.geometry);
   EXPECT_EQ(view.poses().pose(box), ObjectPose{});
-  for (size_t v = 0; v < loaded.positions.size(); ++v)
-    EXPECT_LT(glm::length(view.display().positions[v] - loaded.positions[v]), 1e-5f) << "vertex " << v;
+  EXPECT_EQ(view.objectTransform(box), glm::dmat4{1.0});
 }
 
 // A pose the document refuses changes nothing of it: scene, meshes, light, and no update.
