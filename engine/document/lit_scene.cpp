@@ -65,7 +65,8 @@ bool LitScene::setPose(uint32_t object, const ObjectPose& pose) {
   if (!editor_.setPose(object, pose)) return false;
   const std::vector<EditedSurface> edited = editor_.takeEdited();
   applyEdit(*solver_, editor_.scene(), editor_.meshed(), edited, adaptation_.get());
-  for (const EditedSurface& e : edited) markChanged(e.surface);
+  // Adapting, a surface moved along loses its refinement: its mesh changes too.
+  for (const EditedSurface& e : edited) markChanged(e.surface, e.meshedAnew || adaptation_);
   return true;
 }
 
@@ -76,23 +77,22 @@ void LitScene::restart() {
 
 std::vector<SurfaceUpdate> LitScene::takeUpdates() {
   if (adaptation_)
-    for (uint32_t s : adaptation_->takeChangedSurfaces()) markChanged(s);
+    for (uint32_t s : adaptation_->takeChangedSurfaces()) markChanged(s, true);
   std::sort(changed_.begin(), changed_.end());
   std::vector<SurfaceUpdate> updates;
   updates.reserve(changed_.size());
   const Scene& scene = editor_.scene();
   for (uint32_t s : changed_) {
+    updates.push_back({s, meshed().surfaces[s], poseOf(scene.objects[scene.surfaces[s].object]), isChanged_[s] == 2});
     isChanged_[s] = 0;
-    updates.push_back({s, meshed().surfaces[s], poseOf(scene.objects[scene.surfaces[s].object])});
   }
   changed_.clear();
   return updates;
 }
 
-void LitScene::markChanged(uint32_t surface) {
-  if (isChanged_[surface]) return;
-  isChanged_[surface] = 1;
-  changed_.push_back(surface);
+void LitScene::markChanged(uint32_t surface, bool meshChanged) {
+  if (!isChanged_[surface]) changed_.push_back(surface);
+  isChanged_[surface] = std::max<uint8_t>(isChanged_[surface], meshChanged ? 2 : 1);
 }
 
 }  // namespace engine

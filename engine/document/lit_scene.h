@@ -52,6 +52,9 @@ struct SurfaceUpdate {
   uint32_t surface = 0;
   SurfaceMesh mesh;
   ObjectPose pose;
+  // False when the surface only moved along with its object, its mesh the one it was loaded with:
+  // where its object stood when loaded, nothing of it changed.
+  bool meshChanged = true;
 };
 
 struct LitSceneSettings {
@@ -97,14 +100,14 @@ class LitScene {
   std::vector<SurfaceUpdate> takeUpdates();
 
  private:
-  void markChanged(uint32_t surface);
+  void markChanged(uint32_t surface, bool meshChanged);
 
   const LitSceneSettings settings_;
   SceneEditor editor_;
   std::unique_ptr<MeshAdaptation> adaptation_;
   std::unique_ptr<radiosity::Solver> solver_;
   std::vector<uint32_t> changed_;
-  std::vector<uint8_t> isChanged_;  // per surface: in changed_
+  std::vector<uint8_t> isChanged_;  // per surface: 0 not in changed_, 1 moved along only, 2 mesh changed
 };
 
 }  // namespace engine

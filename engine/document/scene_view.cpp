@@ -22,6 +22,7 @@ glm::dmat4 SceneView::objectTransform(uint32_t object) const {
 SceneView::Taken SceneView::take(const LightingUpdate& update) {
   Taken taken;
   for (const SurfaceUpdate& u : update.meshes) {
+    if (!u.meshChanged) continue;  // the display has it where its object stood when loaded
     // Back to where the object stood when loaded: the object's transform shows it where it is.
     const uint32_t object = scene().surfaces[u.surface].object;
     const RigidMotion toLoaded(scene().objects[object], u.pose, poses_.loadedPose(object));
