@@ -86,6 +86,7 @@ void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh,
   ImGui::Text("%.1f fps (%.2f ms a frame)", io.Framerate, 1000.0f / io.Framerate);
   ImGui::Text("%zu objects, %zu surfaces", scene.objects.size(), scene.surfaces.size());
   ImGui::Text("%zu elements (%zu quads), %zu vertices", mesh.elements, mesh.quads, mesh.vertices);
+  ImGui::Text("%zu chunks drawn, %zu outside the view", state.chunksDrawn, state.chunksCulled);
   ImGui::Separator();
   lightingSection(lighting, state);
   editSection(scene, state);

@@ -16,6 +16,7 @@ struct PanelState {
   float exposure = 1;
   bool wireframe = false;
   double walkSpeed = 1;         // scene units per second, shown
+  size_t chunksDrawn = 0, chunksCulled = 0;  // the display's chunks in the last frame, shown
   int jumpToCamera = -1;        // set by the panel when a camera is clicked, index into cameras
   bool screenshotRequested = false;
   std::string lastScreenshot;   // path of the last screenshot, shown

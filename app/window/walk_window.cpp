@@ -315,6 +315,8 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     panel.walkSpeed = walk.speed;
+    panel.chunksDrawn = renderer.lastFrame().chunksDrawn;
+    panel.chunksCulled = renderer.lastFrame().chunksCulled;
     panel.selected.clear();
     if (const auto selected = edits.drag().selected()) {
       const engine::Object& o = scene.objects[*selected];
