@@ -22,6 +22,14 @@ namespace {
 
 Scene loadAsset(const char* name) { return loadScene(std::string(WALKRAD_ASSETS) + "/" + name); }
 
+// A shipped scene as the window opens it: the scene, its meshes, the objects' poses.
+struct Opened {
+  explicit Opened(const char* name) : scene(loadAsset(name)), meshed(meshScene(scene)), poses(scene) {}
+  const Scene scene;
+  const MeshedScene meshed;
+  const ScenePoses poses;
+};
+
 // How long a test waits for a snapshot before failing: long, as the sanitizer builds run tens of
 // times slower than the release build (ctest's timeout still stops a hang).
 constexpr auto kPatience = std::chrono::minutes(10);
@@ -129,9 +137,8 @@ TEST(Lighting, APausedSnapshotShowsEveryShot) {
 // them, are all taken in: the last snapshot counts them, and with the object back where it was
 // its light is the unmoved scene's (within 0.5%, as EditPath.MovingAnObjectAndBackRestoresTheSolution).
 TEST(Lighting, PosesAskedForWhileShootingAreAllTakenIn) {
-  const Scene scene = loadAsset("cornell.json");
-  const MeshedScene meshed = meshScene(scene);
-  const ScenePoses poses(scene);
+  const Opened cornell("cornell.json");
+  const auto& [scene, meshed, poses] = cornell;
   LightingSettings settings;
   settings.converge = 0.002;
   settings.solver.graphicsProcessors = 2;
@@ -166,9 +173,8 @@ TEST(Lighting, PosesAskedForWhileShootingAreAllTakenIn) {
 // Poses asked for in a burst, before the thread takes any, count each but are taken only as the
 // newest per object: the thread meshes the box's move once, not once per mouse move.
 TEST(Lighting, ABurstOfPosesIsTakenAsItsNewest) {
-  const Scene scene = loadAsset("box-on-floor.json");
-  const MeshedScene meshed = meshScene(scene);
-  const ScenePoses poses(scene);
+  const Opened boxOnFloor("box-on-floor.json");
+  const auto& [scene, meshed, poses] = boxOnFloor;
   LightingSettings settings;
   settings.converge = 0.05;
   settings.solver.resolution = 128;
