@@ -14,9 +14,11 @@ SceneEditor::SceneEditor(Scene scene, MeshedScene meshed)
   if (meshed_.surfaces.size() != scene_.surfaces.size())
     throw std::invalid_argument("a meshed scene of " + std::to_string(meshed_.surfaces.size()) + " surfaces for " +
                                 std::to_string(scene_.surfaces.size()));
-  for (const SurfaceMesh& m : meshed_.surfaces) {
-    homePositions_.push_back(m.positions);
-    homeFrames_.push_back(m.worldFromPlane);
+  // Only what can move needs its loaded positions kept.
+  for (size_t s = 0; s < meshed_.surfaces.size(); ++s) {
+    const bool movable = scene_.objects[scene_.surfaces[s].object].movable;
+    homePositions_.push_back(movable ? meshed_.surfaces[s].positions : std::vector<Vec3>{});
+    homeFrames_.push_back(meshed_.surfaces[s].worldFromPlane);
   }
   homeMesh_.assign(scene_.surfaces.size(), 1);
 }

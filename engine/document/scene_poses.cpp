@@ -45,7 +45,10 @@ glm::dmat4 RigidMotion::matrix() const {
 
 ScenePoses::ScenePoses(Scene scene) : scene_(std::move(scene)), surfacesOf_(scene_.objects.size()) {
   removeContacts(scene_.surfaces);
-  loaded_ = scene_.surfaces;
+  // Only what can move needs its loaded outline kept: a building's fixed walls are most surfaces.
+  loaded_.resize(scene_.surfaces.size());
+  for (size_t s = 0; s < scene_.surfaces.size(); ++s)
+    if (scene_.objects[scene_.surfaces[s].object].movable) loaded_[s] = scene_.surfaces[s];
   for (const Object& o : scene_.objects) loadedPoses_.push_back(poseOf(o));
   for (uint32_t s = 0; s < scene_.surfaces.size(); ++s) surfacesOf_[scene_.surfaces[s].object].push_back(s);
   for (uint32_t o = 0; o < scene_.objects.size(); ++o) objectBounds_.push_back(boundsOf(o));

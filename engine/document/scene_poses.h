@@ -63,7 +63,7 @@ class ScenePoses {
   const ObjectPose& loadedPose(uint32_t object) const { return loadedPoses_[object]; }
   // From where the object stood when loaded to `pose`.
   RigidMotion motionTo(uint32_t object, const ObjectPose& pose) const;
-  // The object's surface `surface` as loaded (without cut-outs), placed at `pose`.
+  // The surface `surface` of a movable object as loaded (without cut-outs), placed by `motion`.
   Surface placed(uint32_t surface, const RigidMotion& motion) const;
 
   // Throws std::invalid_argument for an object that does not exist or is not movable, or a pose
@@ -76,7 +76,7 @@ class ScenePoses {
 
  private:
   Scene scene_;
-  std::vector<Surface> loaded_;  // as loaded, without cut-outs
+  std::vector<Surface> loaded_;  // as loaded, without cut-outs; empty for fixed objects
   std::vector<ObjectPose> loadedPoses_;
   std::vector<std::vector<uint32_t>> surfacesOf_;  // per object
   std::optional<std::pair<Vec3, Vec3>> boundsOf(uint32_t object) const;  // of its surfaces where they stand
