@@ -1,6 +1,6 @@
 #include "engine/document/display_mesh.h"
 
-#include "engine/document/lighting.h"
+#include "engine/document/lit_scene.h"
 #include "engine/geometry/surface_mesh.h"
 #include "radiosity/ambient.h"
 #include "util/check.h"

@@ -30,8 +30,6 @@ class SceneEditor {
   // The surfaces an object is made of (indices into Scene::surfaces).
   const std::vector<uint32_t>& surfacesOf(uint32_t object) const { return poses_.surfacesOf(object); }
   std::optional<uint32_t> findObject(std::string_view name) const { return poses_.findObject(name); }
-  // The objects' poses and their surfaces without cut-outs.
-  const ScenePoses& poses() const { return poses_; }
 
   // Puts `object` at `pose`, surfaces, meshes, cut-outs and scene bounds with it; returns
   // whether anything moved. Costs the object's surfaces and those it rests on (where it stood and
