@@ -7,7 +7,7 @@
 # radiosity/, mesher/ or pxpl5/ include, so the engine stays the one way to mesh and light.
 cmake_minimum_required(VERSION 3.25)
 
-set(app_may "app|app/cli|app/gl|app/image|app/view|app/window|engine|engine/geometry|engine/io|engine/document|shaders|util")
+set(app_may "app|app/cli|app/gl|app/image|app/window|engine|engine/geometry|engine/io|engine/document|engine/session|shaders|util")
 
 set(layers
   "util"            "util"
@@ -18,11 +18,11 @@ set(layers
   "engine/geometry" "engine|engine/geometry|mesher|radiosity|util"
   "engine/io"       "engine|engine/geometry|engine/io|mesher|radiosity|util"
   "engine/document" "engine|engine/geometry|engine/io|engine/document|mesher|radiosity|util"
+  "engine/session"  "engine|engine/geometry|engine/io|engine/document|engine/session|mesher|radiosity|util"
   "app"             "${app_may}"
   "app/cli"         "${app_may}"
   "app/gl"          "${app_may}"
   "app/image"       "${app_may}"
-  "app/view"        "${app_may}"
   "app/window"      "${app_may}")
 # An include naming a file under one of these is the project's; any other is a library's.
 set(project_folders app engine mesher pxpl5 radiosity shaders tests util)
@@ -68,6 +68,18 @@ foreach(entry ${entries})
       string(APPEND problems "\n  ${name}/ is not in tests/layering.cmake's layers")
     endif()
   endif()
+endforeach()
+
+# The engine runs without a display (tests drive a session's frames with none): no window
+# system, GL or UI library is included anywhere in it.
+file(GLOB_RECURSE engine_files ${SOURCE}/engine/*.h ${SOURCE}/engine/*.cpp)
+foreach(file ${engine_files})
+  file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*<(GLFW|glad|GL|EGL|imgui)")
+  foreach(line ${includes})
+    file(RELATIVE_PATH name ${SOURCE} ${file})
+    string(STRIP "${line}" line)
+    string(APPEND problems "\n  ${name}: ${line} (engine/ uses no window system, GL or ImGui)")
+  endforeach()
 endforeach()
 
 if(problems)

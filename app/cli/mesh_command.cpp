@@ -2,10 +2,10 @@
 
 #include "app/cli/import_stats.h"
 #include "app/cli/peak_memory.h"
-#include "app/image/atomic_file.h"
 #include "engine/geometry/mesh_quality.h"
 #include "engine/geometry/meshed_scene.h"
 #include "engine/geometry/surface_mesh.h"
+#include "engine/io/atomic_file.h"
 #include "engine/io/gltf_loader.h"
 #include "engine/io/input_file.h"
 #include "engine/io/load_limits.h"
@@ -101,7 +101,7 @@ int runMesh(const MeshOptions& options) {
     }
   }
 
-  if (!options.dump.empty()) writeFileAtomically(options.dump, dump.dump() + "\n");
+  if (!options.dump.empty()) engine::writeFileAtomically(options.dump, dump.dump() + "\n");
   if (!options.stats.empty()) {
     OrderedJson stats = {
         {"elements", quality.elements},   {"quads", quality.quads},
@@ -111,7 +111,7 @@ int runMesh(const MeshOptions& options) {
         {"mesh_ms", meshMs}, {"repeats", repeats}, {"peak_rss_mb", peakResidentMegabytes()},
     };
     if (!imported.is_null()) stats["import"] = imported;
-    writeFileAtomically(options.stats, stats.dump(2) + "\n");
+    engine::writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   std::printf("%zu elements (%zu quads, %zu triangles), %zu vertices, %zu T-vertices, smallest angle %.2f deg "
               "(%zu elements below %.1f), %.3f ms\n",
