@@ -57,33 +57,6 @@ struct ImGuiSession {
 double g_scroll = 0;
 void onScroll(GLFWwindow*, double, double y) { g_scroll += y; }
 
-// The solver's progress on the command line too: a line about every two seconds while it
-// shoots, and one when it converges.
-class ProgressLine {
- public:
-  explicit ProgressLine(std::string scene) : scene_(std::move(scene)) {}
-  void report(const engine::LightingSnapshot& s) {
-    if (!s.error.empty() && s.error != errorShown_) std::cerr << "walkrad view: the solver stopped: " << s.error << std::endl;
-    errorShown_ = s.error;
-    const double now = glfwGetTime();
-    if (s.converged && !convergedShown_) {
-      std::cout << "walkrad view: " << scene_ << ": converged after " << s.shots << " shots in " << s.solveSeconds
-                << " s (unshot " << 100 * s.unshotFraction << "%)" << std::endl;
-      convergedShown_ = true;
-    } else if (!s.converged && s.shots > 0 && now - last_ >= 2) {
-      std::cout << "walkrad view: " << scene_ << ": " << s.shots << " shots, unshot " << 100 * s.unshotFraction << "%"
-                << std::endl;
-      last_ = now;
-    }
-    if (!s.converged) convergedShown_ = false;
-  }
-
- private:
-  std::string scene_, errorShown_;
-  double last_ = 0;
-  bool convergedShown_ = false;
-};
-
 std::string screenshotName(const engine::Scene& scene) {
   char stamp[32];
   const std::time_t now = std::time(nullptr);
@@ -270,7 +243,6 @@ std::optional<engine::OpenedScene> walkScene(GLFWwindow* window, const ViewOptio
   PanelState panel;
   panel.exposure = static_cast<float>(engine::autoExposure(session.display()));
   panel.wireframe = options.wireframe;
-  ProgressLine progress(scene.file);
 
   MouseTrack mouse;
   engine::SessionInput input;  // the panel's requests wait here for the next frame
@@ -289,7 +261,7 @@ std::optional<engine::OpenedScene> walkScene(GLFWwindow* window, const ViewOptio
     input = {};
     showChanges(session, changes, renderer);
     for (const std::string& report : changes.reports) std::cout << "walkrad view: " << report << std::endl;
-    if (changes.light) progress.report(*session.panel().light);
+    for (const std::string& error : changes.errors) std::cerr << "walkrad view: " << error << std::endl;
     if (panel.autoExposureRequested) {
       panel.exposure = static_cast<float>(engine::autoExposure(session.display()));
       panel.autoExposureRequested = false;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <utility>
 
 namespace engine {
@@ -72,11 +73,13 @@ SessionFrame Session::frame(const SessionInput& input) {
   WalkInput walk = input.walk;
   if (dragging()) walk.scroll = 0;
   applyWalk(walk, input.seconds, walk_, camera_);
+  clock_ += input.seconds;
   if (input.jumpToCamera && *input.jumpToCamera < scene().cameras.size())
     camera_ = fromSceneCamera(scene().cameras[*input.jumpToCamera]);
 
   edit(input, changes);
   exchange(changes);
+  if (changes.light) reportProgress(changes);
   if (input.save) {
     panel_.saveReport = edits_.save();
     changes.reports.push_back(panel_.saveReport);
@@ -127,6 +130,23 @@ void Session::exchange(SessionFrame& changes) {
   shown_ = update.snapshot;
   const std::string& refused = edits_.drag().refusal();
   if (refused != refusedBefore && !refused.empty()) changes.reports.push_back("move refused: " + refused);
+}
+
+void Session::reportProgress(SessionFrame& changes) {
+  const LightingSnapshot& s = *shown_;
+  if (!s.error.empty() && s.error != errorReported_) changes.errors.push_back("the solver stopped: " + s.error);
+  errorReported_ = s.error;
+  std::ostringstream line;
+  if (s.converged && !convergedReported_) {
+    line << scene().file << ": converged after " << s.shots << " shots in " << s.solveSeconds << " s (unshot "
+         << 100 * s.unshotFraction << "%)";
+    convergedReported_ = true;
+  } else if (!s.converged && s.shots > 0 && clock_ - lastProgress_ >= 2) {
+    line << scene().file << ": " << s.shots << " shots, unshot " << 100 * s.unshotFraction << "%";
+    lastProgress_ = clock_;
+  }
+  if (!s.converged) convergedReported_ = false;
+  if (!line.str().empty()) changes.reports.push_back(line.str());
 }
 
 void Session::updatePanel() {

@@ -90,7 +90,10 @@ struct SessionFrame {
   std::vector<uint32_t> surfaces;  // whose display meshes were replaced: to upload again, ascending
   bool radiance = false;           // the display's radiance changed
   bool light = false;              // a new lighting snapshot (PanelModel::light)
-  std::vector<std::string> reports;  // one-line reports for the terminal: saves, refused moves
+  // One-line reports for the terminal: the light's progress (a line about every two seconds while
+  // it shoots, one when it converges), saves, refused moves.
+  std::vector<std::string> reports;
+  std::vector<std::string> errors;  // one-line reports of failures: the solver stopped
 };
 
 class Session {
@@ -125,6 +128,8 @@ class Session {
   void edit(const SessionInput& input, SessionFrame& changes);
   // Sends the poses the edits gave to the lighting thread, and takes what it sent back.
   void exchange(SessionFrame& changes);
+  // The progress lines for a new lighting snapshot.
+  void reportProgress(SessionFrame& changes);
   void updatePanel();
 
   SceneEdits edits_;
@@ -133,6 +138,11 @@ class Session {
   ViewCamera camera_;
   WalkSettings walk_;
   bool paused_ = false;  // asked for
+  // What the progress lines said: the session's time (the frames' seconds summed) at the last, whether
+  // the light's convergence was reported, the last error reported.
+  double clock_ = 0, lastProgress_ = 0;
+  bool convergedReported_ = false;
+  std::string errorReported_;
   PanelModel panel_;
 };
 

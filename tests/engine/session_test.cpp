@@ -67,6 +67,13 @@ void settle(Session& session, Changes* changes = nullptr, const SessionInput& in
   FAIL() << "the light did not converge";
 }
 
+// How many of the reports say that box-on-floor's light converged.
+long convergedLines(const Changes& changes) {
+  return std::count_if(changes.reports.begin(), changes.reports.end(), [](const std::string& line) {
+    return line.rfind(kBoxOnFloor + ": converged after ", 0) == 0;
+  });
+}
+
 // The floor's display vertices (world coordinates) strictly inside x0..x1, z0..z1, with their
 // mean radiance (red).
 struct FloorPatch {
@@ -130,7 +137,9 @@ TEST(Session, ADraggedBoxIsRelitAndUndoAndRedoTakeItBackAndForth) {
   OpenedScene opened = openScene(kBoxOnFloor);
   const ViewCamera camera = defaultCamera(opened.scene);
   Session session(std::move(opened), quickLight(), camera);
-  settle(session);
+  Changes first;
+  settle(session, &first);
+  EXPECT_EQ(convergedLines(first), 1);  // the terminal hears it once
   const FloorPatch before = stripLeft(session);
   EXPECT_EQ(before.vertices, 0u);  // cut out under the box
   const FloorPatch open = floorIn(session, 2.15, 3.5, 0.2, 1.25);  // floor in the open, for scale
@@ -162,6 +171,7 @@ TEST(Session, ADraggedBoxIsRelitAndUndoAndRedoTakeItBackAndForth) {
   EXPECT_TRUE(session.panel().unsaved);
 
   settle(session, &dragged);
+  EXPECT_EQ(convergedLines(dragged), 1);  // again, after the drag
   // The floor was meshed again around the new footprint and uploaded; the strip the box left is
   // floor again, lit like the open floor.
   const FloorPatch left = stripLeft(session);
