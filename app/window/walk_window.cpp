@@ -22,7 +22,6 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 
 namespace app {
 

@@ -130,6 +130,64 @@ TEST(Session, WalkingForwardMovesTheCameraAlongItsHeadingByTheSpeed) {
   EXPECT_EQ(session.panel().walkSpeed, 1.4);
 }
 
+// Empty frames until `done` holds (true), or about a minute of them (false).
+template <typename Done>
+bool framesUntil(Session& session, Done done) {
+  for (int i = 0; i < 60000; ++i) {
+    session.frame({});
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
+}
+
+// The panel's model lists the scene; its pause, restart and camera buttons, sent back as input,
+// reach the solver and the camera.
+TEST(Session, ThePanelModelAndItsButtons) {
+  OpenedScene opened = openScene(kBoxOnFloor);
+  const Scene loaded = opened.scene;
+  Session session(std::move(opened), quickLight(), overviewCamera(loaded));
+  const PanelModel& panel = session.panel();
+  EXPECT_EQ(panel.file, "box-on-floor.json");
+  EXPECT_EQ(panel.units, "m");
+  ASSERT_EQ(panel.objects.size(), 2u);
+  EXPECT_EQ(panel.objects[0].name, "room");
+  EXPECT_FALSE(panel.objects[0].movable);
+  EXPECT_EQ(panel.objects[kBox].name, "box");
+  EXPECT_EQ(panel.objects[kBox].surfaces, 6u);
+  EXPECT_EQ(panel.objects[0].surfaces + panel.objects[kBox].surfaces, panel.surfaces);
+  EXPECT_EQ(panel.cameras, std::vector<std::string>{"default"});
+  EXPECT_EQ(panel.elements, session.display().elements);
+  EXPECT_FALSE(panel.selected);
+
+  SessionInput press;
+  press.press = true;
+  press.pointer = down(1.65, 1.75);
+  session.frame(press);
+  ASSERT_TRUE(panel.selected);
+  EXPECT_EQ(panel.selected->name, "box");
+  EXPECT_TRUE(panel.selected->movable);
+
+  SessionInput jump;
+  jump.jumpToCamera = 0;
+  session.frame(jump);
+  EXPECT_EQ(session.camera().position, fromSceneCamera(loaded.cameras[0]).position);
+  EXPECT_EQ(session.camera().yaw, fromSceneCamera(loaded.cameras[0]).yaw);
+
+  ASSERT_TRUE(framesUntil(session, [&] { return panel.light->shots > 0; }));
+  SessionInput pause;
+  pause.pause = true;
+  session.frame(pause);
+  EXPECT_TRUE(panel.paused);
+  ASSERT_TRUE(framesUntil(session, [&] { return panel.light->paused; }));
+  ASSERT_GT(panel.light->shots, 0u);
+  SessionInput restart;
+  restart.restart = true;
+  session.frame(restart);
+  ASSERT_TRUE(framesUntil(session, [&] { return panel.light->shots == 0; }));
+  EXPECT_EQ(panel.light->unshotFraction, 1);  // from the emitters again, and paused
+}
+
 // A drag of the box through frames: the box follows the ray at once, the document cuts its new
 // footprint out of the floor and the light converges again; undo puts box, floor and light back,
 // redo moves them again.
