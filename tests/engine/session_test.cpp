@@ -2,7 +2,6 @@
 // by inputs as the window would make them from keys and the mouse, and no display (no GLFW, no GL).
 #include "engine/session/session.h"
 
-#include "engine/io/input_file.h"
 #include "engine/io/load_scene.h"
 
 #include <glm/geometric.hpp>
@@ -10,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <thread>
