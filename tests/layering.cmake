@@ -3,8 +3,11 @@
 # point one way only. Run as: cmake -DSOURCE=<project source folder> -P layering.cmake
 #
 # Each folder (its own files, not its sub-folders' files) with the folders it may include from,
-# separated by '|'.
+# separated by '|'. The program (app/) sees the engine through its public headers only: no
+# radiosity/, mesher/ or pxpl5/ include, so the engine stays the one way to mesh and light.
 cmake_minimum_required(VERSION 3.25)
+
+set(app_may "app|app/cli|app/gl|app/image|app/window|engine|engine/geometry|engine/io|engine/document|engine/session|shaders|util")
 
 set(layers
   "util"            "util"
@@ -14,7 +17,13 @@ set(layers
   "engine"          "engine|mesher|util"
   "engine/geometry" "engine|engine/geometry|mesher|radiosity|util"
   "engine/io"       "engine|engine/geometry|engine/io|mesher|radiosity|util"
-  "engine/document" "engine|engine/geometry|engine/io|engine/document|mesher|radiosity|util")
+  "engine/document" "engine|engine/geometry|engine/io|engine/document|mesher|radiosity|util"
+  "engine/session"  "engine|engine/geometry|engine/io|engine/document|engine/session|mesher|radiosity|util"
+  "app"             "${app_may}"
+  "app/cli"         "${app_may}"
+  "app/gl"          "${app_may}"
+  "app/image"       "${app_may}"
+  "app/window"      "${app_may}")
 # An include naming a file under one of these is the project's; any other is a library's.
 set(project_folders app engine mesher pxpl5 radiosity shaders tests util)
 
@@ -50,8 +59,8 @@ foreach(i RANGE 0 ${last} 2)
   endforeach()
 endforeach()
 
-# A sub-folder of the engine that is not listed would go unchecked.
-file(GLOB entries LIST_DIRECTORIES true ${SOURCE}/engine/*)
+# A sub-folder of the engine or the program that is not listed would go unchecked.
+file(GLOB entries LIST_DIRECTORIES true ${SOURCE}/engine/* ${SOURCE}/app/*)
 foreach(entry ${entries})
   if(IS_DIRECTORY ${entry})
     file(RELATIVE_PATH name ${SOURCE} ${entry})
@@ -59,6 +68,18 @@ foreach(entry ${entries})
       string(APPEND problems "\n  ${name}/ is not in tests/layering.cmake's layers")
     endif()
   endif()
+endforeach()
+
+# The engine runs without a display (tests drive a session's frames with none): no window
+# system, GL or UI library is included anywhere in it.
+file(GLOB_RECURSE engine_files ${SOURCE}/engine/*.h ${SOURCE}/engine/*.cpp)
+foreach(file ${engine_files})
+  file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*<(GLFW|glad|GL|EGL|imgui)")
+  foreach(line ${includes})
+    file(RELATIVE_PATH name ${SOURCE} ${file})
+    string(STRIP "${line}" line)
+    string(APPEND problems "\n  ${name}: ${line} (engine/ uses no window system, GL or ImGui)")
+  endforeach()
 endforeach()
 
 if(problems)

@@ -1,7 +1,7 @@
 #include "app/cli/check_command.h"
 
-#include "app/image/atomic_file.h"
 #include "engine/geometry/model_check.h"
+#include "engine/io/atomic_file.h"
 #include "engine/io/load_scene.h"
 
 #include <nlohmann/json.hpp>
@@ -15,7 +15,7 @@ namespace app {
 int runCheck(const CheckOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const engine::Scene scene = engine::loadSceneFaces(options.model, options.load);
-  if (!options.json.empty()) checkCanWrite(options.json);
+  if (!options.json.empty()) engine::checkCanWrite(options.json);
   const std::vector<engine::Finding> findings = engine::checkModel(scene);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
@@ -62,7 +62,7 @@ int runCheck(const CheckOptions& options) {
                                            {"check_ms", ms},
                                            {"counts", summary},
                                            {"findings", list}};
-    writeFileAtomically(options.json, report.dump(2) + "\n");
+    engine::writeFileAtomically(options.json, report.dump(2) + "\n");
   }
   return 0;
 }

@@ -1,10 +1,10 @@
 #include "app/cli/export_command.h"
 
-#include "app/image/atomic_file.h"
 #include "engine/document/display_mesh.h"
 #include "engine/document/gltf_export.h"
 #include "engine/document/lit_scene.h"
 #include "engine/geometry/meshed_scene.h"
+#include "engine/io/atomic_file.h"
 
 #include <chrono>
 #include <iostream>
@@ -39,7 +39,7 @@ int runExport(const ExportOptions& options) {
 
   const double exposure = options.exposure.value_or(engine::autoExposure(mesh));
   const std::string bytes = engine::exportGltf(scene, mesh, {.exposure = exposure, .binary = binary});
-  writeFileAtomically(options.out, bytes);
+  engine::writeFileAtomically(options.out, bytes);
   if (!options.solve.quiet)
     std::cout << "walkrad export: " << options.out << ": " << bytes.size() << " bytes, " << mesh.triangleCount()
               << " triangles, " << mesh.vertices << " vertices, exposure " << exposure << std::endl;

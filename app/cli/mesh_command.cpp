@@ -2,16 +2,16 @@
 
 #include "app/cli/import_stats.h"
 #include "app/cli/peak_memory.h"
-#include "app/image/atomic_file.h"
+#include "engine/geometry/mesh_quality.h"
 #include "engine/geometry/meshed_scene.h"
 #include "engine/geometry/surface_mesh.h"
+#include "engine/io/atomic_file.h"
 #include "engine/io/gltf_loader.h"
 #include "engine/io/input_file.h"
 #include "engine/io/load_limits.h"
 #include "engine/io/load_scene.h"
 #include "engine/io/polygon_case.h"
 #include "engine/io/scene_loader.h"
-#include "mesher/mesh_check.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,23 +27,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using OrderedJson = nlohmann::ordered_json;
-
-// What one meshed polygon (a surface or the polygon case) adds to the report.
-struct Tally {
-  size_t elements = 0, quads = 0, vertices = 0, tVertices = 0, belowAngleBound = 0;
-  double smallestAngle = 180, smallestAspect = 1;
-
-  void add(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh) {
-    const mesher::MeshCheck check = mesher::checkMesh(polygon, mesh);
-    elements += mesh.elements.size();
-    quads += mesh.quadCount();
-    vertices += mesh.vertices.size();
-    tVertices += check.tVertices;
-    belowAngleBound += check.belowAngleBound;
-    smallestAngle = std::min(smallestAngle, check.smallestAngleDeg);
-    smallestAspect = std::min(smallestAspect, check.smallestAspectRatio);
-  }
-};
 
 // Runs `meshOnce` `repeat` times and returns the best wall time in milliseconds.
 template <typename MeshOnce>
@@ -72,7 +55,7 @@ int runMesh(const MeshOptions& options) {
   const engine::JsonReader in(options.input);
   const engine::Json root = gltf ? engine::Json::object() : in.parse(text);
 
-  Tally tally;
+  engine::MeshQuality quality;
   double meshMs = 0;
   size_t repeats = 0;  // surfaces that were repeats of one meshed before (Mesher::repeats)
   OrderedJson dump;
@@ -86,7 +69,7 @@ int runMesh(const MeshOptions& options) {
     } catch (const mesher::MeshRefused& refused) {
       throw engine::meshRefusal(refused, options.input, "outer");
     }
-    tally.add(polygonCase.polygon, mesh);
+    quality.add(polygonCase.polygon, mesh);
     if (!options.dump.empty()) {
       dump["vertices"] = OrderedJson::array();
       for (const mesher::Vec2& p : mesh.vertices) dump["vertices"].push_back({p.x, p.y});
@@ -99,7 +82,7 @@ int runMesh(const MeshOptions& options) {
     if (options.patchSize) engine::overridePatchSize(scene, *options.patchSize);
     std::vector<engine::SurfaceMesh> meshes;
     meshMs = bestOf(options.repeat, [&] { meshes = engine::meshScene(scene, &repeats).surfaces; });
-    for (const engine::SurfaceMesh& m : meshes) tally.add(m.polygon, m.mesh);
+    for (const engine::SurfaceMesh& m : meshes) quality.add(m.polygon, m.mesh);
     if (!options.dump.empty()) {
       dump["vertices"] = OrderedJson::array();
       dump["elements"] = OrderedJson::array();
@@ -118,22 +101,22 @@ int runMesh(const MeshOptions& options) {
     }
   }
 
-  if (!options.dump.empty()) writeFileAtomically(options.dump, dump.dump() + "\n");
+  if (!options.dump.empty()) engine::writeFileAtomically(options.dump, dump.dump() + "\n");
   if (!options.stats.empty()) {
     OrderedJson stats = {
-        {"elements", tally.elements},   {"quads", tally.quads},
-        {"triangles", tally.elements - tally.quads}, {"vertices", tally.vertices},
-        {"t_vertices", tally.tVertices}, {"min_angle_deg", tally.smallestAngle},
-        {"min_aspect_ratio", tally.smallestAspect}, {"below_angle_bound", tally.belowAngleBound},
+        {"elements", quality.elements},   {"quads", quality.quads},
+        {"triangles", quality.elements - quality.quads}, {"vertices", quality.vertices},
+        {"t_vertices", quality.tVertices}, {"min_angle_deg", quality.smallestAngleDeg},
+        {"min_aspect_ratio", quality.smallestAspectRatio}, {"below_angle_bound", quality.belowAngleBound},
         {"mesh_ms", meshMs}, {"repeats", repeats}, {"peak_rss_mb", peakResidentMegabytes()},
     };
     if (!imported.is_null()) stats["import"] = imported;
-    writeFileAtomically(options.stats, stats.dump(2) + "\n");
+    engine::writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   std::printf("%zu elements (%zu quads, %zu triangles), %zu vertices, %zu T-vertices, smallest angle %.2f deg "
               "(%zu elements below %.1f), %.3f ms\n",
-              tally.elements, tally.quads, tally.elements - tally.quads, tally.vertices, tally.tVertices,
-              tally.smallestAngle, tally.belowAngleBound, mesher::kAngleBoundDeg, meshMs);
+              quality.elements, quality.quads, quality.elements - quality.quads, quality.vertices, quality.tVertices,
+              quality.smallestAngleDeg, quality.belowAngleBound, mesher::kAngleBoundDeg, meshMs);
   return 0;
 }
 

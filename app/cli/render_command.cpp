@@ -3,14 +3,14 @@
 #include "app/cli/import_stats.h"
 #include "app/cli/peak_memory.h"
 #include "app/gl/headless_render.h"
-#include "app/image/atomic_file.h"
-#include "app/view/view_camera.h"
 #include "engine/document/display_mesh.h"
 #include "engine/document/lit_scene.h"
 #include "engine/document/scene_poses.h"
 #include "engine/document/scene_view.h"
 #include "engine/geometry/meshed_scene.h"
+#include "engine/io/atomic_file.h"
 #include "engine/io/load_limits.h"
+#include "engine/session/view_camera.h"
 
 #include <nlohmann/json.hpp>
 
@@ -88,8 +88,8 @@ int runRender(const RenderOptions& options) {
     std::cerr << "walkrad render: " << options.scene << ": nothing emits light, so the picture is black"
               << (loaded.imported ? " (give a material an emission, or a sky, in its .walkrad.json sidecar)" : "") << "\n";
 
-  ViewCamera camera;
-  if (!chooseCamera(loaded, options.camera, camera)) {
+  engine::ViewCamera camera;
+  if (!engine::chooseCamera(loaded, options.camera, camera)) {
     std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
     return 2;
   }
@@ -196,7 +196,7 @@ int runRender(const RenderOptions& options) {
     if (!moves.empty()) stats["moves"] = moveStats;
     if (settings.adaptive) stats["adaptive_passes"] = document.adaptivePasses();
     if (scene.imported) stats["import"] = importStats(scene);
-    writeFileAtomically(options.stats, stats.dump(2) + "\n");
+    engine::writeFileAtomically(options.stats, stats.dump(2) + "\n");
   }
   return 0;
 }

@@ -1,6 +1,6 @@
 #include "app/cli/scene_solve.h"
 
-#include "app/image/atomic_file.h"
+#include "engine/io/atomic_file.h"
 #include "engine/io/load_limits.h"
 #include "engine/io/load_scene.h"
 
@@ -12,7 +12,7 @@ engine::Scene loadForSolve(const std::string& path, const std::vector<std::strin
   engine::Scene scene = engine::loadScene(path, options.load);
   if (options.patchSize) engine::overridePatchSize(scene, *options.patchSize);
   for (const std::string& file : outputs)
-    if (!file.empty()) checkCanWrite(file);
+    if (!file.empty()) engine::checkCanWrite(file);
   return scene;
 }
 

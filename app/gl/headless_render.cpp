@@ -7,7 +7,7 @@
 namespace app {
 
 HeadlessImages renderHeadless(const engine::Scene& scene, const engine::DisplayMesh& mesh,
-                              const ViewCamera& camera, int width, int height, float exposure,
+                              const engine::ViewCamera& camera, int width, int height, float exposure,
                               bool wireframe, bool wantLinear) {
   const OsmesaContext context(width, height);
   if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&OsmesaContext::procAddress)))
@@ -16,7 +16,7 @@ HeadlessImages renderHeadless(const engine::Scene& scene, const engine::DisplayM
   SceneRenderer renderer;
   renderer.upload(mesh);
   FrameSettings frame;
-  frame.clipFromDisplay = clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
+  frame.clipFromDisplay = engine::clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
   frame.width = width;
   frame.height = height;
   frame.exposure = exposure;

@@ -3,9 +3,9 @@
 
 #include "app/gl/scene_renderer.h"
 #include "app/image/image.h"
-#include "app/view/view_camera.h"
 #include "engine/document/display_mesh.h"
 #include "engine/scene.h"
+#include "engine/session/view_camera.h"
 
 namespace app {
 
@@ -17,7 +17,7 @@ struct HeadlessImages {
 // Creates an offscreen GL 3.3 core context for the call. Throws std::runtime_error when OSMesa
 // or the GL driver fails.
 HeadlessImages renderHeadless(const engine::Scene& scene, const engine::DisplayMesh& mesh,
-                              const ViewCamera& camera, int width, int height, float exposure,
+                              const engine::ViewCamera& camera, int width, int height, float exposure,
                               bool wireframe, bool wantLinear);
 
 }  // namespace app

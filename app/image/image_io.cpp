@@ -1,5 +1,5 @@
-#include "app/image/atomic_file.h"
 #include "app/image/image.h"
+#include "engine/io/atomic_file.h"
 
 #include <stb_image_write.h>
 
@@ -21,7 +21,7 @@ void writePng(const std::string& path, const ImageRgb8& image) {
   std::string bytes;
   if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3, image.pixels.data(), image.width * 3))
     throw std::runtime_error(path + ": cannot encode PNG");
-  writeFileAtomically(path, bytes);
+  engine::writeFileAtomically(path, bytes);
 }
 
 void writePfm(const std::string& path, const ImageRgbF& image) {
@@ -31,7 +31,7 @@ void writePfm(const std::string& path, const ImageRgbF& image) {
     const float* data = image.pixels.data() + static_cast<size_t>(y) * row;
     bytes.append(reinterpret_cast<const char*>(data), row * sizeof(float));  // x86-64 is little-endian
   }
-  writeFileAtomically(path, bytes);
+  engine::writeFileAtomically(path, bytes);
 }
 
 }  // namespace app

@@ -1,43 +1,27 @@
-// The Dear ImGui panel of the walkthrough window: what the scene holds, how fast it draws,
-// its viewpoints, and the display settings.
+// The Dear ImGui panel of the walkthrough window: it draws the session's panel model (what the
+// scene holds, the light's progress, the selection and history) with the window's own display
+// settings, and turns its buttons into the next frame's session input.
 #pragma once
 
-#include "engine/document/display_mesh.h"
-#include "engine/document/lighting.h"
-#include "engine/scene.h"
-
-#include <glm/vec3.hpp>
+#include "engine/session/session.h"
 
 #include <string>
 
 namespace app {
 
+// What the window keeps of its own: display settings, and what only it knows.
 struct PanelState {
   float exposure = 1;
   bool wireframe = false;
-  double walkSpeed = 1;         // scene units per second, shown
   size_t chunksDrawn = 0, chunksCulled = 0;  // the display's chunks in the last frame, shown
-  int jumpToCamera = -1;        // set by the panel when a camera is clicked, index into cameras
   bool screenshotRequested = false;
   std::string lastScreenshot;   // path of the last screenshot, shown
-  bool paused = false;          // the solver's pause toggle
-  bool restartRequested = false;
   bool autoExposureRequested = false;
-  // Editing: what the window shows of the selection and history, and what the panel asks for.
-  std::string selected;            // the selected object's name; empty when none
-  bool selectedMovable = false;
-  glm::dvec3 selectedPosition{0};
-  double selectedTurn = 0;         // rotate_y, degrees
-  bool canUndo = false, canRedo = false, unsaved = false;
-  std::string saveReport;          // the last save's one-line report
-  std::string editReport;          // why the last move was refused; empty when it was not
-  std::string openReport;          // why the last file dropped onto the window did not open
-  bool undoRequested = false, redoRequested = false, saveRequested = false;
+  std::string openReport;       // why the last file dropped onto the window did not open
 };
 
-// Draws the panel for one frame; inputs that change the view or the solver are written into
-// `state`. `lighting` is the newest solver snapshot.
-void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh, const engine::LightingSnapshot& lighting,
-                    PanelState& state);
+// Draws the panel for one frame. Display settings change `state`; what the session is to do
+// (undo, redo, save, pause, restart, a camera to jump to) goes into `next`, the next frame's input.
+void drawScenePanel(const engine::PanelModel& model, PanelState& state, engine::SessionInput& next);
 
 }  // namespace app

@@ -9,29 +9,19 @@
 
 #include "app/cli/peak_memory.h"
 #include "app/gl/scene_renderer.h"
-#include "app/image/atomic_file.h"
 #include "app/image/image.h"
-#include "app/view/view_camera.h"
 #include "app/window/frame_times.h"
-#include "app/window/scene_edits.h"
 #include "app/window/scene_panel.h"
-#include "app/window/walk_controls.h"
 #include "engine/diagnostics.h"
 #include "engine/document/display_mesh.h"
-#include "engine/document/lighting.h"
-#include "engine/geometry/meshed_scene.h"
-#include "engine/io/gltf_loader.h"
-#include "engine/io/input_file.h"
-#include "engine/io/load_limits.h"
-#include "engine/io/load_scene.h"
-#include "engine/io/scene_loader.h"
+#include "engine/io/atomic_file.h"
+#include "engine/session/session.h"
 
 #include <nlohmann/json.hpp>
 
 #include <ctime>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 
 namespace app {
 
@@ -65,33 +55,6 @@ struct ImGuiSession {
 // chains to.
 double g_scroll = 0;
 void onScroll(GLFWwindow*, double, double y) { g_scroll += y; }
-
-// The solver's progress on the command line too: a line about every two seconds while it
-// shoots, and one when it converges.
-class ProgressLine {
- public:
-  explicit ProgressLine(std::string scene) : scene_(std::move(scene)) {}
-  void report(const engine::LightingSnapshot& s) {
-    if (!s.error.empty() && s.error != errorShown_) std::cerr << "walkrad view: the solver stopped: " << s.error << std::endl;
-    errorShown_ = s.error;
-    const double now = glfwGetTime();
-    if (s.converged && !convergedShown_) {
-      std::cout << "walkrad view: " << scene_ << ": converged after " << s.shots << " shots in " << s.solveSeconds
-                << " s (unshot " << 100 * s.unshotFraction << "%)" << std::endl;
-      convergedShown_ = true;
-    } else if (!s.converged && s.shots > 0 && now - last_ >= 2) {
-      std::cout << "walkrad view: " << scene_ << ": " << s.shots << " shots, unshot " << 100 * s.unshotFraction << "%"
-                << std::endl;
-      last_ = now;
-    }
-    if (!s.converged) convergedShown_ = false;
-  }
-
- private:
-  std::string scene_, errorShown_;
-  double last_ = 0;
-  bool convergedShown_ = false;
-};
 
 std::string screenshotName(const engine::Scene& scene) {
   char stamp[32];
@@ -128,18 +91,26 @@ bool pressed(int key, int mods = 0) {
   return false;
 }
 
-// The ray under the cursor, for picking and dragging.
-Ray cursorRay(GLFWwindow* window, const ViewCamera& camera) {
+// The ray under the cursor, through the picture on the screen (drawn with the session's camera).
+engine::Ray cursorRay(GLFWwindow* window, const engine::ViewCamera& camera) {
   int width = 0, height = 0;
   glfwGetWindowSize(window, &width, &height);
   glm::dvec2 mouse;
   glfwGetCursorPos(window, &mouse.x, &mouse.y);
   const glm::dvec2 ndc{2 * mouse.x / std::max(width, 1) - 1, 1 - 2 * mouse.y / std::max(height, 1)};
-  return {camera.position, rayThrough(camera, static_cast<double>(width) / std::max(height, 1), ndc)};
+  return {camera.position, engine::rayThrough(camera, static_cast<double>(width) / std::max(height, 1), ndc)};
 }
 
-WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking, bool wheelTaken) {
-  WalkInput input;
+// The mouse as the last frame left it.
+struct MouseTrack {
+  glm::dvec2 last{0};
+  bool looking = false;   // the right button turns the view (it went down off the panel)
+  bool leftDown = false;
+};
+
+// The walk's keys, the look and the wheel, off the panel.
+engine::WalkInput readWalk(GLFWwindow* window, MouseTrack& mouse) {
+  engine::WalkInput input;
   const ImGuiIO& io = ImGui::GetIO();
   auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
   if (!io.WantCaptureKeyboard && !controlHeld(window)) {
@@ -151,46 +122,81 @@ WalkInput readWalkInput(GLFWwindow* window, glm::dvec2& lastMouse, bool& looking
     input.down = down(GLFW_KEY_Q) || down(GLFW_KEY_PAGE_DOWN);
     input.fast = down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT);
   }
-  glm::dvec2 mouse;
-  glfwGetCursorPos(window, &mouse.x, &mouse.y);
+  glm::dvec2 at;
+  glfwGetCursorPos(window, &at.x, &at.y);
   const bool rightHeld = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-  if (rightHeld && !looking && !io.WantCaptureMouse) looking = true;  // a look starts off the panel
-  if (!rightHeld) looking = false;
-  if (looking) {
-    input.lookDx = mouse.x - lastMouse.x;
-    input.lookDy = mouse.y - lastMouse.y;
+  if (rightHeld && !mouse.looking && !io.WantCaptureMouse) mouse.looking = true;
+  if (!rightHeld) mouse.looking = false;
+  if (mouse.looking) {
+    input.lookDx = at.x - mouse.last.x;
+    input.lookDy = at.y - mouse.last.y;
   }
-  lastMouse = mouse;
-  if (!io.WantCaptureMouse && !wheelTaken) input.scroll = g_scroll;
+  mouse.last = at;
+  if (!io.WantCaptureMouse) input.scroll = g_scroll;
   return input;
 }
 
-// A scene opened in the window: its file's text (kept for saving poses into it; empty for a
-// glTF model, which is never written) and the scene.
-struct OpenedScene {
-  std::string path, text;
-  engine::Scene scene;
-};
+// The frame's keys and mouse as the session's actions, added to what the panel asked for in the
+// last frame (already in `input`).
+void readInput(GLFWwindow* window, const engine::Session& session, MouseTrack& mouse, engine::SessionInput& input) {
+  input.walk = readWalk(window, mouse);
+  g_scroll = 0;
+  const bool leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  input.press = leftDown && !mouse.leftDown && !ImGui::GetIO().WantCaptureMouse;  // picking off the panel
+  input.held = leftDown;
+  mouse.leftDown = leftDown;
+  input.pointer = cursorRay(window, session.camera());
+  if (pressed(GLFW_KEY_R)) ++input.turns;
+  if (pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) --input.turns;
+  input.deselect = pressed(GLFW_KEY_ESCAPE);
+  input.undo |= pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL);
+  input.redo |= pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL);
+  input.save |= pressed(GLFW_KEY_S, GLFW_MOD_CONTROL);
+}
 
-// Throws SceneError for a file that is not a valid scene or model.
-OpenedScene openScene(const std::string& path, const engine::LoadOptions& load, std::optional<double> patchSize) {
-  OpenedScene opened;
-  opened.path = path;
-  if (engine::isGltfPath(path)) {
-    opened.scene = engine::loadScene(path, load);
-  } else {
-    engine::refuseGltfOptions(path, load);
-    opened.text = engine::readInputFile(path);
-    opened.scene = engine::parseScene(opened.text, path);
-  }
-  if (patchSize) engine::overridePatchSize(opened.scene, *patchSize);
-  return opened;
+// What a session's frame changed, on the GL side: meshes uploaded again, radiance, transforms.
+void showChanges(const engine::Session& session, const engine::SessionFrame& changes, SceneRenderer& renderer) {
+  for (uint32_t object : changes.moved) renderer.setObjectTransform(object, glm::mat4(session.objectTransform(object)));
+  if (!changes.surfaces.empty()) renderer.updateSurfaces(session.display(), changes.surfaces);
+  if (changes.radiance) renderer.updateRadiance(session.display());
 }
 
 // Files dropped onto the window since the last frame (GLFW reports them through a callback).
 std::vector<std::string> g_dropped;
 void onDrop(GLFWwindow*, int count, const char** paths) {
   for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+}
+
+// The last file dropped onto the window since the last frame, opened; one that does not open
+// says why in the panel.
+std::optional<engine::OpenedScene> openDropped(PanelState& panel) {
+  if (g_dropped.empty()) return std::nullopt;
+  const std::string path = g_dropped.back();  // of several files, the last
+  g_dropped.clear();
+  try {
+    engine::OpenedScene next = engine::openScene(path);
+    std::cout << "walkrad view: opened " << path << std::endl;
+    return next;
+  } catch (const engine::SceneError& e) {
+    panel.openReport = e.what();
+    std::cerr << "walkrad view: " << e.what() << std::endl;
+    return std::nullopt;
+  }
+}
+
+// Saves the frame drawn (the back buffer, before the swap) as `path`. A failed screenshot must not
+// end the walk: it says why and returns false.
+bool saveScreenshot(const std::string& path, int width, int height, PanelState& panel) {
+  try {
+    writePng(path, readFramebuffer(width, height, GL_BACK));
+    std::cout << "screenshot: " << path << std::endl;
+    panel.lastScreenshot = path;
+    return true;
+  } catch (const std::exception& e) {
+    std::cerr << "walkrad view: " << e.what() << "\n";
+    panel.lastScreenshot = "(failed) " + path;
+    return false;
+  }
 }
 
 // What `view --stats` reports: the frames' times, and the last scene's display and light.
@@ -216,140 +222,69 @@ void writeViewStats(const std::string& path, const ViewRecord& record) {
       {"unshot_fraction", record.unshotFraction},
       {"peak_rss_mb", peakResidentMegabytes()},
   };
-  writeFileAtomically(path, stats.dump(2) + "\n");
+  engine::writeFileAtomically(path, stats.dump(2) + "\n");
 }
 
 // Walks through one scene until the window closes, the frame count runs out (nothing returned)
 // or a file dropped onto the window opens (returned: the window goes on with it). A dropped file
 // that does not open leaves the scene as it is and says why in the panel. `frame` counts the
 // window's frames across the scenes it shows, so --frames bounds the whole run; `record` takes
-// each frame's time, from the top of its loop to the swap.
-std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& options, OpenedScene opened, ViewCamera camera,
-                                     int& frame, int& exitCode, ViewRecord& record) {
-  // The lighting thread's document and the window's view start from the same meshes.
-  engine::MeshedScene meshed = engine::meshScene(opened.scene);
-  SceneEdits edits(opened.path, std::move(opened.text), engine::SceneView(opened.scene, meshed));
-  const engine::Scene& scene = edits.view().scene();  // follows the edits
-  engine::DisplayMesh& mesh = edits.view().display();
-  engine::shadeWithAmbient(opened.scene, mesh);
-
+// each frame's time, from the top of its loop to the swap. The session does the walking and
+// editing; this shell turns GLFW's input into the session's, and draws.
+std::optional<engine::OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& options, engine::OpenedScene opened,
+                                             const engine::ViewCamera& camera, int& frame, int& exitCode, ViewRecord& record) {
+  engine::LightingSettings lighting = options.lighting;
+  lighting.adaptive = adaptiveSettings(options.adapt, opened.scene);
+  engine::Session session(std::move(opened), lighting, camera);
+  const engine::Scene& scene = session.scene();
   SceneRenderer renderer;
-  renderer.upload(mesh);
+  renderer.upload(session.display());
   PanelState panel;
-  panel.exposure = static_cast<float>(engine::autoExposure(mesh));
-  // The document shoots on its own thread; each frame shows its newest snapshot.
-  engine::LightingSettings lightingSettings = options.lighting;
-  lightingSettings.adaptive = adaptiveSettings(options.adapt, scene);
-  engine::LightingThread lighting(std::move(opened.scene), std::move(meshed), lightingSettings);
-  std::shared_ptr<const engine::LightingSnapshot> shown = lighting.latest();
-  ProgressLine progress(scene.file);
+  panel.exposure = static_cast<float>(engine::autoExposure(session.display()));
   panel.wireframe = options.wireframe;
-  WalkSettings walk;
-  walk.speed = defaultWalkSpeed(scene);
 
-  glm::dvec2 lastMouse{0};
-  bool looking = false, leftWasDown = false;
+  MouseTrack mouse;
+  engine::SessionInput input;  // the panel's requests wait here for the next frame
   double lastTime = glfwGetTime();
   for (++frame; !glfwWindowShouldClose(window); ++frame) {
     const double frameStart = glfwGetTime();
     g_presses.clear();
     glfwPollEvents();
+    readInput(window, session, mouse, input);
     const double now = glfwGetTime();
-    ObjectDrag& drag = edits.drag();
-    applyWalk(readWalkInput(window, lastMouse, looking, drag.dragging()), now - lastTime, walk, camera);
+    input.seconds = now - lastTime;
     lastTime = now;
     if (pressed(GLFW_KEY_F12)) panel.screenshotRequested = true;
 
-    // Picking and dragging with the left button, off the panel.
-    const bool leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    if (leftDown && !leftWasDown && !ImGui::GetIO().WantCaptureMouse) drag.press(cursorRay(window, camera));
-    if (leftDown && drag.dragging()) {
-      drag.follow(cursorRay(window, camera));
-      // A wheel notch lifts by 5 cm.
-      if (g_scroll != 0) drag.lift(g_scroll * 0.05 / scene.metersPerUnit);
-    }
-    g_scroll = 0;
-    const auto recordEdit = [&](const std::optional<engine::PoseEdit>& edit) {
-      if (edit) edits.record(*edit);
-    };
-    if (!leftDown && leftWasDown) recordEdit(drag.release());
-    leftWasDown = leftDown;
-    if (pressed(GLFW_KEY_R) || pressed(GLFW_KEY_R, GLFW_MOD_SHIFT)) recordEdit(drag.turn(pressed(GLFW_KEY_R) ? 15 : -15));
-    if (pressed(GLFW_KEY_ESCAPE)) {
-      recordEdit(drag.release());
-      drag.deselect();
-    }
-    if (pressed(GLFW_KEY_Z, GLFW_MOD_CONTROL) || panel.undoRequested) edits.undo();
-    if (pressed(GLFW_KEY_Y, GLFW_MOD_CONTROL) || panel.redoRequested) edits.redo();
-    // An object moved in the view: the picture follows at once, the document is asked for the pose.
-    for (const auto& [object, pose] : edits.takePosesToSend()) {
-      lighting.requestPose(object, pose);
-      renderer.setObjectTransform(object, glm::mat4(edits.view().objectTransform(object)));
-    }
-    if (pressed(GLFW_KEY_S, GLFW_MOD_CONTROL) || panel.saveRequested) {
-      panel.saveReport = edits.save();
-      std::cout << "walkrad view: " << panel.saveReport << std::endl;
-    }
-    panel.undoRequested = panel.redoRequested = panel.saveRequested = false;
-    if (drag.refusal() != panel.editReport) {
-      panel.editReport = drag.refusal();
-      if (!panel.editReport.empty()) std::cout << "walkrad view: move refused: " << panel.editReport << std::endl;
-    }
-
-    // What the document did since the last frame: meshes, refusals, light.
-    const engine::LightingUpdate update = lighting.take();
-    const engine::SceneView::Taken taken = edits.take(update);
-    if (!taken.surfaces.empty()) renderer.updateSurfaces(mesh, taken.surfaces);
-    if (taken.radiance) renderer.updateRadiance(mesh);
-    for (uint32_t object : taken.movedBack) renderer.setObjectTransform(object, glm::mat4(edits.view().objectTransform(object)));
-    if (update.snapshot != shown) {
-      shown = update.snapshot;
-      progress.report(*shown);
-    }
+    const engine::SessionFrame changes = session.frame(input);
+    input = {};
+    showChanges(session, changes, renderer);
+    for (const std::string& report : changes.reports) std::cout << "walkrad view: " << report << std::endl;
+    for (const std::string& error : changes.errors) std::cerr << "walkrad view: " << error << std::endl;
     if (panel.autoExposureRequested) {
-      panel.exposure = static_cast<float>(engine::autoExposure(mesh));
+      panel.exposure = static_cast<float>(engine::autoExposure(session.display()));
       panel.autoExposureRequested = false;
     }
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    panel.walkSpeed = walk.speed;
     panel.chunksDrawn = renderer.lastFrame().chunksDrawn;
     panel.chunksCulled = renderer.lastFrame().chunksCulled;
-    panel.selected.clear();
-    if (const auto selected = edits.drag().selected()) {
-      const engine::Object& o = scene.objects[*selected];
-      panel.selected = o.name;
-      panel.selectedMovable = o.movable;
-      panel.selectedPosition = o.position;
-      panel.selectedTurn = o.rotateYDeg;
-    }
-    panel.canUndo = edits.history().canUndo();
-    panel.canRedo = edits.history().canRedo();
-    panel.unsaved = edits.history().unsaved();
-    drawScenePanel(scene, mesh, *shown, panel);
-    if (panel.paused != shown->paused) lighting.setPaused(panel.paused);
-    if (panel.restartRequested) {
-      lighting.restart();
-      panel.restartRequested = false;
-    }
-    if (panel.jumpToCamera >= 0) {
-      camera = fromSceneCamera(scene.cameras[static_cast<size_t>(panel.jumpToCamera)]);
-      panel.jumpToCamera = -1;
-    }
+    drawScenePanel(session.panel(), panel, input);
     ImGui::Render();
 
     int width = 0, height = 0;
     glfwGetFramebufferSize(window, &width, &height);
     if (width > 0 && height > 0) {
       FrameSettings settings;
-      settings.clipFromDisplay = clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
+      settings.clipFromDisplay =
+          engine::clipFromDisplay(session.camera(), static_cast<double>(width) / height, scene, session.display().origin);
       settings.width = width;
       settings.height = height;
       settings.exposure = panel.exposure;
       settings.wireframe = panel.wireframe;
-      settings.highlight = edits.drag().selected();
+      settings.highlight = session.selected();
       renderer.draw(settings);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
@@ -357,38 +292,17 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       std::string shot;
       if (panel.screenshotRequested) shot = screenshotName(scene);
       if (last && !options.screenshot.empty()) shot = options.screenshot;
-      if (!shot.empty()) {
-        panel.screenshotRequested = false;
-        try {
-          writePng(shot, readFramebuffer(width, height, GL_BACK));  // before the swap
-          std::cout << "screenshot: " << shot << std::endl;
-          panel.lastScreenshot = shot;
-        } catch (const std::exception& e) {  // a failed screenshot must not end the walk
-          std::cerr << "walkrad view: " << e.what() << "\n";
-          panel.lastScreenshot = "(failed) " + shot;
-          if (last) exitCode = 1;
-        }
-      }
+      panel.screenshotRequested = false;
+      if (!shot.empty() && !saveScreenshot(shot, width, height, panel) && last) exitCode = 1;
     }
-    if (!g_dropped.empty()) {
-      const std::string path = g_dropped.back();  // of several files, the last
-      g_dropped.clear();
-      try {
-        OpenedScene next = openScene(path, {}, std::nullopt);
-        std::cout << "walkrad view: opened " << path << std::endl;
-        return next;
-      } catch (const engine::SceneError& e) {
-        panel.openReport = e.what();
-        std::cerr << "walkrad view: " << e.what() << std::endl;
-      }
-    }
+    if (auto next = openDropped(panel)) return next;
     glfwSwapBuffers(window);
     record.frames.add(1000 * (glfwGetTime() - frameStart));
-    record.elements = mesh.elements;
-    record.vertices = mesh.vertices;
+    record.elements = session.display().elements;
+    record.vertices = session.display().vertices;
     record.chunks = renderer.lastFrame();
-    record.shots = shown->shots;
-    record.unshotFraction = shown->unshotFraction;
+    record.shots = session.panel().light->shots;
+    record.unshotFraction = session.panel().light->unshotFraction;
     if (options.frames > 0 && frame >= options.frames) break;
   }
   return std::nullopt;
@@ -397,10 +311,10 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
 }  // namespace
 
 int runView(const ViewOptions& options) {
-  OpenedScene opened = openScene(options.scene, options.load, options.patchSize);
-  if (!options.stats.empty()) checkCanWrite(options.stats);
-  ViewCamera camera;
-  if (!chooseCamera(opened.scene, options.camera, camera)) {
+  engine::OpenedScene opened = engine::openScene(options.scene, options.load, options.patchSize);
+  if (!options.stats.empty()) engine::checkCanWrite(options.stats);
+  engine::ViewCamera camera;
+  if (!engine::chooseCamera(opened.scene, options.camera, camera)) {
     std::cerr << options.scene << ": cameras: no camera named \"" << options.camera << "\"\n";
     return 2;
   }
@@ -441,7 +355,7 @@ int runView(const ViewOptions& options) {
     const ImGuiSession imgui(window);
     for (auto next = walkScene(window, options, std::move(opened), camera, frame, exitCode, record); next;
          next = walkScene(window, options, std::move(*next), camera, frame, exitCode, record)) {
-      chooseCamera(next->scene, "", camera);
+      engine::chooseCamera(next->scene, "", camera);
       glfwSetWindowTitle(window, ("walkrad - " + std::filesystem::path(next->path).filename().string()).c_str());
     }
   }

@@ -36,8 +36,8 @@ ImageRgbF solvedImage(double lift, double patch) {
   engine::Scene scene;
   const engine::MeshedScene meshed = boxScene(lift, patch, scene);
   const engine::DisplayMesh mesh = test::solvedDisplayMesh(scene, meshed);
-  ViewCamera camera;
-  chooseCamera(scene, "", camera);
+  engine::ViewCamera camera;
+  engine::chooseCamera(scene, "", camera);
   return renderHeadless(scene, mesh, camera, 160, 120, 1, false, true).linear;
 }
 

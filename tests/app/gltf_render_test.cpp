@@ -48,8 +48,8 @@ ImageRgb8 renderAmbient(const engine::Scene& scene, int width, int height) {
   const engine::MeshedScene meshed = engine::meshScene(scene);
   engine::DisplayMesh mesh = engine::displayMesh(scene, meshed);
   engine::shadeWithAmbient(scene, mesh);
-  ViewCamera camera;
-  EXPECT_TRUE(chooseCamera(scene, "", camera));
+  engine::ViewCamera camera;
+  EXPECT_TRUE(engine::chooseCamera(scene, "", camera));
   return renderHeadless(scene, mesh, camera, width, height, static_cast<float>(engine::autoExposure(mesh)), false, false).color;
 }
 
@@ -89,8 +89,8 @@ INSTANTIATE_TEST_SUITE_P(Models, ExternalRender,
 ImageRgb8 renderSolved(const engine::Scene& scene, int width, int height) {
   const engine::MeshedScene meshed = engine::meshScene(scene);
   const engine::DisplayMesh mesh = test::solvedDisplayMesh(scene, meshed);
-  ViewCamera camera;
-  EXPECT_TRUE(chooseCamera(scene, "", camera));
+  engine::ViewCamera camera;
+  EXPECT_TRUE(engine::chooseCamera(scene, "", camera));
   return renderHeadless(scene, mesh, camera, width, height, static_cast<float>(engine::autoExposure(mesh)), false, false).color;
 }
 

@@ -47,8 +47,8 @@ ImageRgb8 renderSolved(const GoldenCase& c) {
   engine::solveTo(solver, c.converge, UINT64_MAX);
   EXPECT_LE(solver.unshotFraction(), c.converge);
   engine::setRadiance(mesh, solver);
-  ViewCamera camera;
-  EXPECT_TRUE(chooseCamera(scene, c.camera, camera));
+  engine::ViewCamera camera;
+  EXPECT_TRUE(engine::chooseCamera(scene, c.camera, camera));
   return renderHeadless(scene, mesh, camera, c.width, c.height, static_cast<float>(engine::autoExposure(mesh)), false, false).color;
 }
 

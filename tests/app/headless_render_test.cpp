@@ -19,8 +19,8 @@ engine::Scene loadAsset(const char* name) { return engine::loadScene(std::string
 HeadlessImages render(const engine::Scene& scene, int width, int height, bool wireframe = false, bool linear = false) {
   engine::DisplayMesh mesh = engine::displayMesh(scene, engine::meshScene(scene));
   engine::shadeWithAmbient(scene, mesh);
-  ViewCamera camera;
-  EXPECT_TRUE(chooseCamera(scene, "", camera));
+  engine::ViewCamera camera;
+  EXPECT_TRUE(engine::chooseCamera(scene, "", camera));
   return renderHeadless(scene, mesh, camera, width, height, static_cast<float>(engine::autoExposure(mesh)), wireframe, linear);
 }
 

@@ -1,5 +1,5 @@
-#include "app/image/atomic_file.h"
 #include "app/image/image.h"
+#include "engine/io/atomic_file.h"
 #include "tests/app/image_read.h"
 
 #include <gtest/gtest.h>
@@ -60,20 +60,20 @@ TEST(ImageIo, ALinkOrAPipeIsWrittenThroughNotReplaced) {
   const std::filesystem::path dir = std::filesystem::path(kDir) / "through";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  writeFileAtomically((dir / "target.txt").string(), "old");
+  engine::writeFileAtomically((dir / "target.txt").string(), "old");
   std::filesystem::create_symlink("target.txt", dir / "link.txt");
-  writeFileAtomically((dir / "link.txt").string(), "new");
+  engine::writeFileAtomically((dir / "link.txt").string(), "new");
   EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.txt"));
   EXPECT_EQ(readAll((dir / "target.txt").string()), "new");
   // A link to a file not there yet stays a link, and the file appears where it points.
   std::filesystem::create_symlink("later.txt", dir / "ahead.txt");
-  checkCanWrite((dir / "ahead.txt").string());
-  writeFileAtomically((dir / "ahead.txt").string(), "made");
+  engine::checkCanWrite((dir / "ahead.txt").string());
+  engine::writeFileAtomically((dir / "ahead.txt").string(), "made");
   EXPECT_TRUE(std::filesystem::is_symlink(dir / "ahead.txt"));
   EXPECT_EQ(readAll((dir / "later.txt").string()), "made");
   // One pointing into a folder that is not there cannot be written: that is known up front.
   std::filesystem::create_symlink("no-such-folder/x.txt", dir / "nowhere.txt");
-  EXPECT_THROW(checkCanWrite((dir / "nowhere.txt").string()), std::runtime_error);
+  EXPECT_THROW(engine::checkCanWrite((dir / "nowhere.txt").string()), std::runtime_error);
 
   const std::string pipe = (dir / "pipe").string();
   ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
@@ -81,7 +81,7 @@ TEST(ImageIo, ALinkOrAPipeIsWrittenThroughNotReplaced) {
   // nor, were the pipe replaced, leaves anyone waiting.
   const int reader = ::open(pipe.c_str(), O_RDONLY | O_NONBLOCK);
   ASSERT_GE(reader, 0);
-  writeFileAtomically(pipe, "through the pipe");
+  engine::writeFileAtomically(pipe, "through the pipe");
   char buffer[64] = {};
   const ssize_t got = ::read(reader, buffer, sizeof buffer);
   ::close(reader);
@@ -90,7 +90,7 @@ TEST(ImageIo, ALinkOrAPipeIsWrittenThroughNotReplaced) {
 }
 
 TEST(ImageIo, ReadingGarbageThrows) {
-  writeFileAtomically(kDir + "/garbage.png", "not a png");
+  engine::writeFileAtomically(kDir + "/garbage.png", "not a png");
   EXPECT_THROW(test::readPng(kDir + "/garbage.png"), std::runtime_error);
   EXPECT_THROW(test::readPfm(kDir + "/garbage.png"), std::runtime_error);
 }

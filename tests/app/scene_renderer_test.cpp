@@ -2,13 +2,13 @@
 // uploads draw what drawing everything anew draws.
 #include "app/gl/osmesa_context.h"
 #include "app/gl/scene_renderer.h"
-#include "app/view/view_camera.h"
 #include "engine/document/display_mesh.h"
 #include "engine/document/scene_editor.h"
 #include "engine/geometry/meshed_scene.h"
 #include "engine/geometry/solid_surfaces.h"
 #include "engine/io/load_scene.h"
 #include "engine/io/scene_loader.h"
+#include "engine/session/view_camera.h"
 #include "tests/app/pixel_probe.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -36,10 +36,10 @@ ImageRgb8 drawn(SceneRenderer& renderer, const FrameSettings& frame) {
 }
 
 FrameSettings frameFor(const engine::Scene& scene, const engine::DisplayMesh& mesh) {
-  ViewCamera camera;
-  EXPECT_TRUE(chooseCamera(scene, "", camera));
+  engine::ViewCamera camera;
+  EXPECT_TRUE(engine::chooseCamera(scene, "", camera));
   FrameSettings frame;
-  frame.clipFromDisplay = clipFromDisplay(camera, static_cast<double>(kWidth) / kHeight, scene, mesh.origin);
+  frame.clipFromDisplay = engine::clipFromDisplay(camera, static_cast<double>(kWidth) / kHeight, scene, mesh.origin);
   frame.width = kWidth;
   frame.height = kHeight;
   frame.exposure = static_cast<float>(engine::autoExposure(mesh));

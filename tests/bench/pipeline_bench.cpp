@@ -2,9 +2,9 @@
 // Run: build/tests/walkrad_bench (figures in docs/BENCHMARKS.md).
 #include "app/gl/osmesa_context.h"
 #include "app/gl/scene_renderer.h"
-#include "app/view/view_camera.h"
 #include "engine/document/display_mesh.h"
 #include "engine/io/scene_loader.h"
+#include "engine/session/view_camera.h"
 
 #include <benchmark/benchmark.h>
 
@@ -65,10 +65,10 @@ void headlessFrame(benchmark::State& state) {
     throw std::runtime_error("no GL");
   app::SceneRenderer renderer;
   renderer.upload(mesh);
-  app::ViewCamera camera;
-  app::chooseCamera(scene, "", camera);
+  engine::ViewCamera camera;
+  engine::chooseCamera(scene, "", camera);
   app::FrameSettings frame;
-  frame.clipFromDisplay = app::clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
+  frame.clipFromDisplay = engine::clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
   frame.width = width;
   frame.height = height;
   frame.exposure = static_cast<float>(engine::autoExposure(mesh));

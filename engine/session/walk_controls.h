@@ -2,9 +2,9 @@
 // logic, free of GLFW, so it is tested without a window.
 #pragma once
 
-#include "app/view/view_camera.h"
+#include "engine/session/view_camera.h"
 
-namespace app {
+namespace engine {
 
 struct WalkInput {
   bool forward = false, back = false, left = false, right = false;  // W S A D
@@ -27,4 +27,4 @@ double defaultWalkSpeed(const engine::Scene& scene);
 // stays within +-89 degrees.
 void applyWalk(const WalkInput& input, double seconds, WalkSettings& settings, ViewCamera& camera);
 
-}  // namespace app
+}  // namespace engine

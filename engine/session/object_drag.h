@@ -13,7 +13,7 @@
 #include <string>
 #include <utility>
 
-namespace app {
+namespace engine {
 
 struct Ray {
   glm::dvec3 origin{0}, direction{0, 0, 1};
@@ -71,4 +71,4 @@ class ObjectDrag {
   std::optional<std::pair<uint32_t, engine::ObjectPose>> newPose_;
 };
 
-}  // namespace app
+}  // namespace engine

@@ -7,7 +7,7 @@
 #include <string>
 #include <sys/types.h>
 
-namespace app {
+namespace engine {
 
 // Where the parts of a temporary file's name after its stem come from: tried in turn until one
 // names nothing in the folder.
@@ -58,4 +58,4 @@ class TemporaryFile {
   std::string name_;  // the temporary name in the folder, once it has one
 };
 
-}  // namespace app
+}  // namespace engine

@@ -1,11 +1,11 @@
 // The camera conventions of spec/scene-format.md (CAMERA).
-#include "app/view/view_camera.h"
+#include "engine/session/view_camera.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
-namespace app {
+namespace engine {
 namespace {
 
 engine::Scene unitScene() {
@@ -117,4 +117,4 @@ TEST(ViewCamera, ARoomFarFromTheOriginDrawsAsAtTheOrigin) {
 }
 
 }  // namespace
-}  // namespace app
+}  // namespace engine

@@ -1,10 +1,10 @@
-#include "app/window/object_drag.h"
+#include "engine/session/object_drag.h"
 
 #include "engine/geometry/pick.h"
 
 #include <cmath>
 
-namespace app {
+namespace engine {
 
 void ObjectDrag::deselect() {
   if (dragging_) release();
@@ -84,4 +84,4 @@ bool ObjectDrag::place(const engine::ObjectPose& pose) {
 
 void ObjectDrag::refused(const engine::PoseRefusal& refusal) { refusal_ = refusal.why; }
 
-}  // namespace app
+}  // namespace engine

@@ -1,10 +1,10 @@
-// Atomic writes (app/image/atomic_file.h): temporary files are created exclusively, never
+// Atomic writes (engine/io/atomic_file.h): temporary files are created exclusively, never
 // through a symbolic link planted where they might go, and leave nothing behind when a write
 // fails or the writer is killed. Runs as root in CI, so failures are made with a file size
 // limit rather than permissions.
-#include "app/image/atomic_file.h"
-#include "app/image/temporary_file.h"
-#include "tests/app/file_size_limit.h"
+#include "engine/io/atomic_file.h"
+#include "engine/io/temporary_file.h"
+#include "tests/engine/file_size_limit.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace app {
+namespace engine {
 namespace {
 
 namespace fs = std::filesystem;
@@ -152,4 +152,4 @@ TEST(AtomicFile, PermissionsAreANewFilesOrTheReplacedOnes) {
 }
 
 }  // namespace
-}  // namespace app
+}  // namespace engine

@@ -1,4 +1,4 @@
-#include "app/window/walk_controls.h"
+#include "engine/session/walk_controls.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace app {
+namespace engine {
 
 double defaultWalkSpeed(const engine::Scene& scene) { return 1.4 / scene.metersPerUnit; }
 
@@ -33,4 +33,4 @@ void applyWalk(const WalkInput& input, double seconds, WalkSettings& settings, V
   }
 }
 
-}  // namespace app
+}  // namespace engine

@@ -4,7 +4,7 @@
 #include <csignal>
 #include <sys/resource.h>
 
-namespace app::test {
+namespace engine::test {
 
 // While in scope, a write that would take a file of this process past `bytes` fails with EFBIG,
 // as on a full disk (RLIMIT_FSIZE; the signal that would end the process is ignored).
@@ -29,4 +29,4 @@ class FileSizeLimit {
   void (*previous_)(int) = nullptr;
 };
 
-}  // namespace app::test
+}  // namespace engine::test

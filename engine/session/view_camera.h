@@ -8,7 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-namespace app {
+namespace engine {
 
 struct ViewCamera {
   glm::dvec3 position{0};
@@ -41,4 +41,4 @@ glm::mat4 clipFromDisplay(const ViewCamera& camera, double aspect, const engine:
 // of an image of `aspect` = width / height: where a click points.
 glm::dvec3 rayThrough(const ViewCamera& camera, double aspect, glm::dvec2 ndc);
 
-}  // namespace app
+}  // namespace engine

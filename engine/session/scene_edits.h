@@ -1,18 +1,18 @@
-// The window's editing state: the scene as the thread that draws holds it, its undo history, the
-// mouse drag, the exchange with the document on the lighting thread (poses asked for, what it
-// sends back), and saving back to the scene's file (Ctrl+S) atomically.
+// A session's editing state (session.h): the scene as the thread that draws holds it, its undo
+// history, the mouse drag, the exchange with the document on the lighting thread (poses asked
+// for, what it sends back), and saving back to the scene's file (Ctrl+S) atomically.
 #pragma once
 
-#include "app/window/object_drag.h"
 #include "engine/document/edit_history.h"
 #include "engine/document/scene_view.h"
+#include "engine/session/object_drag.h"
 
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace app {
+namespace engine {
 
 class SceneEdits {
  public:
@@ -24,6 +24,7 @@ class SceneEdits {
   engine::SceneView& view() { return view_; }
   const engine::SceneView& view() const { return view_; }
   ObjectDrag& drag() { return drag_; }
+  const ObjectDrag& drag() const { return drag_; }
   const engine::EditHistory& history() const { return history_; }
 
   // Records an edit that has been made (a drag released, a turn).
@@ -35,6 +36,8 @@ class SceneEdits {
   // The poses to ask the document for (engine::LightingThread::requestPose), in order: what
   // drags, turns, undo and redo did since the last call.
   std::vector<std::pair<uint32_t, engine::ObjectPose>> takePosesToSend();
+  // How many poses takePosesToSend has given, in all (LightingSnapshot::edits counts those taken).
+  uint64_t posesSent() const { return posesSent_; }
   // What the document sent back (LightingThread::take) goes into the view. A refused pose puts
   // the object back where the document keeps it; the drag shows why until a pose asked for after
   // the refusal has been taken, and an edit recorded with that pose keeps the pose the object
@@ -56,4 +59,4 @@ class SceneEdits {
   uint64_t refusalShownUntil_ = 0;  // the poses sent when the last refusal came
 };
 
-}  // namespace app
+}  // namespace engine

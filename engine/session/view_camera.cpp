@@ -1,4 +1,4 @@
-#include "app/view/view_camera.h"
+#include "engine/session/view_camera.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace app {
+namespace engine {
 
 glm::dvec3 ViewCamera::forward() const {
   return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
@@ -66,4 +66,4 @@ glm::dvec3 rayThrough(const ViewCamera& camera, double aspect, glm::dvec2 ndc) {
   return glm::normalize(forward + ndc.x * halfHeight * aspect * right + ndc.y * halfHeight * up);
 }
 
-}  // namespace app
+}  // namespace engine

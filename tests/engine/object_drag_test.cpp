@@ -1,13 +1,13 @@
 // Selecting and dragging objects with rays, as the window's mouse does.
-#include "app/view/view_camera.h"
-#include "app/window/object_drag.h"
-#include "app/window/scene_edits.h"
 #include "engine/document/lighting.h"
 #include "engine/io/input_file.h"
 #include "engine/io/load_limits.h"
 #include "engine/io/load_scene.h"
 #include "engine/io/scene_loader.h"
-#include "tests/app/file_size_limit.h"
+#include "engine/session/object_drag.h"
+#include "engine/session/scene_edits.h"
+#include "engine/session/view_camera.h"
+#include "tests/engine/file_size_limit.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@
 #include <fstream>
 #include <thread>
 
-namespace app {
+namespace engine {
 namespace {
 
 // A room (fixed) with a 1 m box (movable) standing on its floor at x, z in 1..2.
@@ -249,4 +249,4 @@ TEST(ObjectDrag, SavingAGltfModelIsRefusedWithAReason) {
 }
 
 }  // namespace
-}  // namespace app
+}  // namespace engine

@@ -1,6 +1,6 @@
-#include "app/window/scene_edits.h"
+#include "engine/session/scene_edits.h"
 
-#include "app/image/atomic_file.h"
+#include "engine/io/atomic_file.h"
 #include "engine/io/gltf_loader.h"
 #include "engine/io/scene_loader.h"
 #include "engine/io/scene_saver.h"
@@ -8,7 +8,7 @@
 #include <exception>
 #include <utility>
 
-namespace app {
+namespace engine {
 
 SceneEdits::SceneEdits(std::string path, std::string text, engine::SceneView view)
     : path_(std::move(path)), text_(std::move(text)), view_(std::move(view)) {}
@@ -63,7 +63,7 @@ std::string SceneEdits::save() {
     // A file that would not load again is not written; the loader's error says why (an object
     // moved so far off that the scene's patch size is too small for its extent).
     engine::parseScene(text, path_);
-    writeFileAtomically(path_, text);
+    engine::writeFileAtomically(path_, text);
     text_ = text;
     history_.markSaved();
     return "saved " + path_;
@@ -72,4 +72,4 @@ std::string SceneEdits::save() {
   }
 }
 
-}  // namespace app
+}  // namespace engine

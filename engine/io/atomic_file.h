@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace app {
+namespace engine {
 
 // Throws std::runtime_error naming `path` when the file cannot be written; the old file, if
 // any, is then untouched and no temporary file is left behind. A new file has the permissions
@@ -22,4 +22,4 @@ void writeFileAtomically(const std::string& path, std::string_view bytes);
 // rather than after. Creates nothing.
 void checkCanWrite(const std::string& path);
 
-}  // namespace app
+}  // namespace engine

@@ -1,10 +1,10 @@
-#include "app/window/walk_controls.h"
+#include "engine/session/walk_controls.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
-namespace app {
+namespace engine {
 namespace {
 
 ViewCamera lookingAlongZ() {
@@ -80,4 +80,4 @@ TEST(WalkControls, DefaultSpeedIsWalkingPaceInSceneUnits) {
 }
 
 }  // namespace
-}  // namespace app
+}  // namespace engine

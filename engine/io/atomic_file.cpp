@@ -1,6 +1,6 @@
-#include "app/image/atomic_file.h"
+#include "engine/io/atomic_file.h"
 
-#include "app/image/temporary_file.h"
+#include "engine/io/temporary_file.h"
 
 #include <cerrno>
 #include <climits>
@@ -13,7 +13,7 @@
 #include <system_error>
 #include <unistd.h>
 
-namespace app {
+namespace engine {
 
 namespace {
 
@@ -111,4 +111,4 @@ void checkCanWrite(const std::string& given) {
     throw std::runtime_error(given + ": cannot create: " + std::strerror(errno));
 }
 
-}  // namespace app
+}  // namespace engine

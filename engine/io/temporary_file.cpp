@@ -1,4 +1,4 @@
-#include "app/image/temporary_file.h"
+#include "engine/io/temporary_file.h"
 
 #include <cerrno>
 #include <fcntl.h>
@@ -6,7 +6,7 @@
 #include <system_error>
 #include <unistd.h>
 
-namespace app {
+namespace engine {
 
 namespace {
 
@@ -80,4 +80,4 @@ void TemporaryFile::replace(const std::string& name) {
   ::fsync(folder_.fd);  // the rename itself, to the disk; a file system that cannot has it anyway
 }
 
-}  // namespace app
+}  // namespace engine
