@@ -87,6 +87,9 @@ void drawScenePanel(const engine::Scene& scene, const engine::DisplayMesh& mesh,
   ImGui::Text("%zu objects, %zu surfaces", scene.objects.size(), scene.surfaces.size());
   ImGui::Text("%zu elements (%zu quads), %zu vertices", mesh.elements, mesh.quads, mesh.vertices);
   ImGui::Text("%zu chunks drawn, %zu outside the view", state.chunksDrawn, state.chunksCulled);
+  ImGui::Text("%zu triangles drawn", state.trianglesDrawn);
+  ImGui::SameLine();
+  ImGui::Checkbox("level of detail", &state.levelOfDetail);
   ImGui::Separator();
   lightingSection(lighting, state);
   editSection(scene, state);

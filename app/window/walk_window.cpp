@@ -212,6 +212,7 @@ void writeViewStats(const std::string& path, const ViewRecord& record) {
       {"vertices", record.vertices},
       {"chunks_drawn", record.chunks.chunksDrawn},
       {"chunks_culled", record.chunks.chunksCulled},
+      {"triangles_drawn", record.chunks.triangles},
       {"shots", record.shots},
       {"unshot_fraction", record.unshotFraction},
       {"peak_rss_mb", peakResidentMegabytes()},
@@ -317,6 +318,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
     panel.walkSpeed = walk.speed;
     panel.chunksDrawn = renderer.lastFrame().chunksDrawn;
     panel.chunksCulled = renderer.lastFrame().chunksCulled;
+    panel.trianglesDrawn = renderer.lastFrame().triangles;
     panel.selected.clear();
     if (const auto selected = edits.drag().selected()) {
       const engine::Object& o = scene.objects[*selected];
@@ -350,7 +352,8 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       settings.exposure = panel.exposure;
       settings.wireframe = panel.wireframe;
       settings.highlight = edits.drag().selected();
-      renderer.draw(settings);
+      settings.levelOfDetail = panel.levelOfDetail;
+      renderer.draw(mesh, settings);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
       const bool last = options.frames > 0 && frame >= options.frames;
