@@ -201,6 +201,7 @@ void SceneRenderer::drawTriangles(const engine::DisplayMesh& mesh, const FrameSe
   glUseProgram(shading_.id());
   glUniform1f(shading_.uniform("u_exposure"), frame.exposure);
   glUniform1i(shading_.uniform("u_linearOutput"), linearOutput ? 1 : 0);
+  glUniform1i(shading_.uniform("u_toneMapVertices"), frame.toneMapVertices && !linearOutput ? 1 : 0);
 
   // Faces are one-sided, and their backs are not drawn: a walker outside a room sees into it
   // (a doll's house view) instead of a black wall, and silhouettes get no black seams where a

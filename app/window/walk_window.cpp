@@ -353,6 +353,7 @@ std::optional<OpenedScene> walkScene(GLFWwindow* window, const ViewOptions& opti
       settings.wireframe = panel.wireframe;
       settings.highlight = edits.drag().selected();
       settings.levelOfDetail = panel.levelOfDetail;
+      settings.toneMapVertices = true;
       renderer.draw(mesh, settings);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
