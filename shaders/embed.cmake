@@ -1,5 +1,6 @@
 # Writes OUTPUT, a C++ file defining shaders::source(name) over the GLSL files in INPUTS
-# (a ;-list), so the program needs no files beside it at run time.
+# (a ;-list), so the program needs no files beside it at run time. A line `#include "NAME"` in a
+# shader is replaced by the file NAME when the program compiles it (app/gl/gl_program.cpp).
 set(body "")
 foreach(file IN LISTS INPUTS)
   get_filename_component(name ${file} NAME)

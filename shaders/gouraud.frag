@@ -1,21 +1,20 @@
 #version 330 core
-// Writes either linear radiance (for float targets and --linear) or the displayed colour:
-// radiance times exposure, clamped, encoded as sRGB.
+// Writes either linear radiance (for float targets and --linear) or the displayed colour: per
+// pixel, or as the vertices' displayed colours interpolated (u_toneMapVertices).
 in vec3 v_radiance;
 
 uniform float u_exposure;
 uniform bool u_linearOutput;
+uniform bool u_toneMapVertices;
 
 out vec4 o_color;
 
-vec3 srgbFromLinear(vec3 c) {
-  return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
+#include "tone.glsl"
 
 void main() {
-  if (u_linearOutput) {
+  if (u_linearOutput || u_toneMapVertices) {
     o_color = vec4(v_radiance, 1.0);
   } else {
-    o_color = vec4(srgbFromLinear(clamp(v_radiance * u_exposure, 0.0, 1.0)), 1.0);
+    o_color = vec4(displayColour(v_radiance, u_exposure), 1.0);
   }
 }

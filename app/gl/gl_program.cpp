@@ -2,6 +2,7 @@
 
 #include "shaders/shader_sources.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -24,9 +25,32 @@ void checkStatus(GLuint id, GLenum status, GetStatus getStatus, GetLog getLog, D
   throw std::runtime_error(what + ": " + log);
 }
 
-GLuint compile(GLenum stage, std::string_view file) {
+std::string_view embedded(std::string_view file) {
   const std::string_view text = shaders::source(file);
   if (text.empty()) throw std::runtime_error("no embedded shader named " + std::string(file));
+  return text;
+}
+
+// GLSL has no #include: each line `#include "NAME"` becomes the embedded file NAME, so that the
+// stages share functions (tone.glsl).
+std::string withIncludes(std::string_view text) {
+  static constexpr std::string_view kInclude = "#include \"";
+  std::string out;
+  while (!text.empty()) {
+    const size_t end = std::min(text.find('\n'), text.size() - 1) + 1;
+    const std::string_view line = text.substr(0, end);
+    const size_t close = line.find('"', kInclude.size());
+    if (line.starts_with(kInclude) && close != std::string_view::npos)
+      out += embedded(line.substr(kInclude.size(), close - kInclude.size()));
+    else
+      out += line;
+    text.remove_prefix(end);
+  }
+  return out;
+}
+
+GLuint compile(GLenum stage, std::string_view file) {
+  const std::string text = withIncludes(embedded(file));
   const GLuint shader = glCreateShader(stage);
   const char* data = text.data();
   const auto size = static_cast<GLint>(text.size());

@@ -23,8 +23,8 @@ HeadlessImages renderHeadless(const engine::Scene& scene, const engine::DisplayM
   frame.wireframe = wireframe;
 
   HeadlessImages images;
-  if (wantLinear) images.linear = renderer.drawLinear(frame);
-  renderer.draw(frame);
+  if (wantLinear) images.linear = renderer.drawLinear(mesh, frame);
+  renderer.draw(mesh, frame);
   glFinish();
   images.color = readFramebuffer(width, height, GL_FRONT);
   return images;

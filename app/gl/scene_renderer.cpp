@@ -71,6 +71,7 @@ void SceneRenderer::release() {
 void SceneRenderer::upload(const engine::DisplayMesh& mesh) {
   release();
   chunkOf_.assign(mesh.surfaces.size(), 0);
+  even_.assign(mesh.surfaces.size(), 0);
   for (ChunkPlan& plan : planChunks(mesh)) {
     Chunk& chunk = chunks_.emplace_back();
     chunk.object = plan.object;
@@ -100,19 +101,47 @@ void SceneRenderer::fill(const engine::DisplayMesh& mesh, Chunk& chunk) {
   chunk.low = glm::vec3{INFINITY}, chunk.high = glm::vec3{-INFINITY};
   for (const glm::vec3& p : vectors_) chunk.low = glm::min(chunk.low, p), chunk.high = glm::max(chunk.high, p);
   uploadBuffer(chunk.positions, GL_ARRAY_BUFFER, vectors_);
-  gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
-  uploadBuffer(chunk.radiance, GL_ARRAY_BUFFER, vectors_);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  fillRadiance(mesh, chunk);
 
   // Element buffers are the VAO's state.
   glBindVertexArray(chunk.vao);
-  gatherIndices(mesh, chunk.surfaces, &engine::SurfaceDisplay::triangles, indices_);
-  uploadBuffer(chunk.triangles, GL_ELEMENT_ARRAY_BUFFER, indices_);
-  chunk.triangleIndices = static_cast<GLsizei>(indices_.size());
   gatherIndices(mesh, chunk.surfaces, &engine::SurfaceDisplay::edges, indices_);
   uploadBuffer(chunk.edges, GL_ELEMENT_ARRAY_BUFFER, indices_);
   chunk.edgeIndices = static_cast<GLsizei>(indices_.size());
   glBindVertexArray(0);
+  chunk.band = kUngathered;
+}
+
+void SceneRenderer::fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk) {
+  gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
+  uploadBuffer(chunk.radiance, GL_ARRAY_BUFFER, vectors_);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  chunk.radianceStale = false;
+  bool changed = false;
+  for (uint32_t s : chunk.surfaces) {
+    const bool even = evenlyLit(mesh.surfaces[s].radiance, even_[s] != 0, detail_);
+    changed = changed || even != (even_[s] != 0);
+    even_[s] = even;
+  }
+  if (changed) chunk.band = kUngathered;
+}
+
+void SceneRenderer::gatherDetail(const engine::DisplayMesh& mesh, const FrameSettings& frame, Chunk& chunk) {
+  const float perUnit = frame.levelOfDetail ? pixelsPerUnit(frame.clipFromDisplay, frame.width) : 0;
+  const int band = frame.levelOfDetail ? depthBand(nearestDepth(clipFromObject(frame, chunk.object), chunk.low, chunk.high)) : kEveryElement;
+  if (band == chunk.band && perUnit == chunk.pixelsPerUnit) return;
+  chunk.band = band;
+  chunk.pixelsPerUnit = perUnit;
+  if (band == kEveryElement)
+    gatherIndices(mesh, chunk.surfaces, &engine::SurfaceDisplay::triangles, indices_);
+  else
+    gatherTriangles(mesh, chunk.surfaces, band, perUnit, even_, detail_, indices_);
+  glBindVertexArray(chunk.vao);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.triangles);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices_.size() * sizeof(uint32_t)), indices_.data(), GL_DYNAMIC_DRAW);
+  glBindVertexArray(0);
+  chunk.triangleIndices = static_cast<GLsizei>(indices_.size());
 }
 
 void SceneRenderer::updateSurfaces(const engine::DisplayMesh& mesh, std::span<const uint32_t> surfaces) {
@@ -132,12 +161,7 @@ void SceneRenderer::updateRadiance(const engine::DisplayMesh& mesh) {
       throw std::invalid_argument("radiance for " + std::to_string(vertices) + " vertices of a chunk that has " +
                                   std::to_string(chunk.vertices));
   }
-  for (const Chunk& chunk : chunks_) {
-    gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
-    glBindBuffer(GL_ARRAY_BUFFER, chunk.radiance);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vectors_.size() * sizeof(glm::vec3)), vectors_.data());
-  }
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  for (Chunk& chunk : chunks_) chunk.radianceStale = true;
 }
 
 void SceneRenderer::setObjectTransform(uint32_t object, const glm::mat4& displayFromObjectDisplay) {
@@ -160,8 +184,15 @@ void SceneRenderer::cull(const FrameSettings& frame) {
   }
 }
 
-void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput) {
+void SceneRenderer::drawTriangles(const engine::DisplayMesh& mesh, const FrameSettings& frame, bool linearOutput) {
   cull(frame);
+  for (size_t c = 0; c < chunks_.size(); ++c) {
+    if (!visible_[c]) continue;
+    Chunk& chunk = chunks_[c];
+    if (chunk.radianceStale) fillRadiance(mesh, chunk);
+    gatherDetail(mesh, frame, chunk);
+    lastFrame_.triangles += static_cast<size_t>(chunk.triangleIndices) / 3;
+  }
   glViewport(0, 0, frame.width, frame.height);
   glClearColor(0, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -170,6 +201,7 @@ void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput)
   glUseProgram(shading_.id());
   glUniform1f(shading_.uniform("u_exposure"), frame.exposure);
   glUniform1i(shading_.uniform("u_linearOutput"), linearOutput ? 1 : 0);
+  glUniform1i(shading_.uniform("u_toneMapVertices"), frame.toneMapVertices && !linearOutput ? 1 : 0);
 
   // Faces are one-sided, and their backs are not drawn: a walker outside a room sees into it
   // (a doll's house view) instead of a black wall, and silhouettes get no black seams where a
@@ -190,8 +222,8 @@ void SceneRenderer::drawTriangles(const FrameSettings& frame, bool linearOutput)
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-void SceneRenderer::draw(const FrameSettings& frame) {
-  drawTriangles(frame, false);
+void SceneRenderer::draw(const engine::DisplayMesh& mesh, const FrameSettings& frame) {
+  drawTriangles(mesh, frame, false);
   if (frame.wireframe || frame.highlight) {
     glUseProgram(wire_.id());
     glDepthFunc(GL_LEQUAL);
@@ -214,7 +246,7 @@ void SceneRenderer::draw(const FrameSettings& frame) {
   glUseProgram(0);
 }
 
-ImageRgbF SceneRenderer::drawLinear(const FrameSettings& frame) {
+ImageRgbF SceneRenderer::drawLinear(const engine::DisplayMesh& mesh, const FrameSettings& frame) {
   GLint previous = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
   GLuint target = 0, color = 0, depth = 0;
@@ -232,7 +264,7 @@ ImageRgbF SceneRenderer::drawLinear(const FrameSettings& frame) {
 
   ImageRgbF image{frame.width, frame.height, {}};
   if (complete) {
-    drawTriangles(frame, true);
+    drawTriangles(mesh, frame, true);
     glBindVertexArray(0);
     glUseProgram(0);
     image.pixels.resize(static_cast<size_t>(frame.width) * static_cast<size_t>(frame.height) * 3);

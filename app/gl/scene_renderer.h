@@ -5,11 +5,13 @@
 // The mesh lives on the GPU in chunks (display_chunks.h): surfaces of one object, each chunk with
 // buffers and bounds of its own. A surface meshed again re-uploads its chunk only, an object
 // moves by a transform of its own without any upload, and a chunk wholly outside the view is not
-// drawn.
+// drawn, nor is new radiance uploaded to it until it is. A chunk's triangles are gathered from
+// the mesh when its level of detail changes (level_of_detail.h).
 #pragma once
 
 #include "app/gl/display_chunks.h"
 #include "app/gl/gl_program.h"
+#include "app/gl/level_of_detail.h"
 #include "app/image/image.h"
 #include "engine/document/display_mesh.h"
 
@@ -30,11 +32,21 @@ struct FrameSettings {
   // The selected object: its element edges are drawn in the highlight colour whether or not the
   // wireframe is on.
   std::optional<uint32_t> highlight;
+  // Surfaces too small on the screen or too evenly lit to show their elements drawn as their
+  // outlines (level_of_detail.h): the window's frames. Off, every element is drawn (images).
+  bool levelOfDetail = false;
+  // The displayed colour computed per vertex and interpolated, as Gouraud shading hardware did
+  // (Pixel-Planes 5 among it), instead of per pixel: a third less of llvmpipe's work on a kitchen
+  // at 1280x720, for gradients a little darker between unlike vertices. The window's frames; off,
+  // images keep the exact per-pixel colour.
+  bool toneMapVertices = false;
 };
 
-// What the last frame drew: chunks within the view, and chunks left out as wholly outside it.
+// What the last frame drew: chunks within the view, and chunks left out as wholly outside it;
+// the triangles drawn.
 struct FrameCounts {
   size_t chunksDrawn = 0, chunksCulled = 0;
+  size_t triangles = 0;
 };
 
 class SceneRenderer {
@@ -50,19 +62,21 @@ class SceneRenderer {
   // surfaces changed: moved, or meshed again with other vertices). The chunks stay as they were
   // cut.
   void updateSurfaces(const engine::DisplayMesh& mesh, std::span<const uint32_t> surfaces);
-  // Replaces the vertex radiance only (a new lighting snapshot) of the mesh uploaded. Throws
-  // std::invalid_argument, changing nothing, when a surface's vertex count is not the one uploaded.
+  // Takes the vertex radiance only (a new lighting snapshot) of the mesh uploaded: uploaded to each
+  // chunk when it is next drawn. Throws std::invalid_argument, changing nothing, when a surface's
+  // vertex count is not the one uploaded.
   void updateRadiance(const engine::DisplayMesh& mesh);
   // Draws `object`'s surfaces through `displayFromObjectDisplay` (display coordinates from its
   // vertices'): identity until set, kept across uploads.
   void setObjectTransform(uint32_t object, const glm::mat4& displayFromObjectDisplay);
 
-  // Draws into the bound framebuffer: tone-mapped sRGB colour, the wireframe when asked.
-  void draw(const FrameSettings& frame);
+  // Draws `mesh` (the one uploaded, as updated since) into the bound framebuffer: tone-mapped sRGB
+  // colour, the wireframe when asked.
+  void draw(const engine::DisplayMesh& mesh, const FrameSettings& frame);
 
   // Draws linear radiance (no wireframe, no tone mapping) into an offscreen float target and
   // reads it back; the bound framebuffer is left as it was.
-  ImageRgbF drawLinear(const FrameSettings& frame);
+  ImageRgbF drawLinear(const engine::DisplayMesh& mesh, const FrameSettings& frame);
 
   const FrameCounts& lastFrame() const { return lastFrame_; }
   size_t chunkCount() const { return chunks_.size(); }
@@ -75,14 +89,24 @@ class SceneRenderer {
     GLsizei triangleIndices = 0, edgeIndices = 0;
     size_t vertices = 0;
     glm::vec3 low{0}, high{0};  // the bounds of its positions (before its object's transform)
+    // What its triangle buffer holds: the level of detail it was gathered at (kEveryElement
+    // without one, kUngathered: to be gathered); whether radiance is waiting to be uploaded.
+    int band = kUngathered;
+    float pixelsPerUnit = 0;
+    bool radianceStale = false;
   };
+  static constexpr int kUngathered = INT_MAX, kEveryElement = INT_MAX - 1;
 
   void fill(const engine::DisplayMesh& mesh, Chunk& chunk);
+  // Uploads the chunk's radiance and judges its surfaces' evenness (even_) anew.
+  void fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk);
+  // The chunk's triangles at the frame's level of detail, gathered again when it changed.
+  void gatherDetail(const engine::DisplayMesh& mesh, const FrameSettings& frame, Chunk& chunk);
   void release();
   glm::mat4 clipFromObject(const FrameSettings& frame, uint32_t object) const;
   // Which chunks the frame draws (visible_), counted in lastFrame_.
   void cull(const FrameSettings& frame);
-  void drawTriangles(const FrameSettings& frame, bool linearOutput);
+  void drawTriangles(const engine::DisplayMesh& mesh, const FrameSettings& frame, bool linearOutput);
 
   GlProgram shading_{"gouraud.vert", "gouraud.frag"};
   GlProgram wire_{"wire.vert", "wire.frag"};
@@ -91,6 +115,8 @@ class SceneRenderer {
   std::vector<uint32_t> chunkOf_;  // per surface
   std::vector<glm::mat4> displayFromObject_;
   std::vector<uint8_t> visible_;  // per chunk, in the frame being drawn
+  const DetailSettings detail_;
+  std::vector<uint8_t> even_;  // per surface: evenly lit (level_of_detail.h), as last uploaded
   FrameCounts lastFrame_;
   // Scratch for assembling a chunk's buffers, kept from chunk to chunk.
   std::vector<glm::vec3> vectors_;

@@ -84,6 +84,9 @@ void drawScenePanel(const engine::PanelModel& model, PanelState& state, engine::
   ImGui::Text("%zu objects, %zu surfaces", model.objects.size(), model.surfaces);
   ImGui::Text("%zu elements (%zu quads), %zu vertices", model.elements, model.quads, model.vertices);
   ImGui::Text("%zu chunks drawn, %zu outside the view", state.chunksDrawn, state.chunksCulled);
+  ImGui::Text("%zu triangles drawn", state.trianglesDrawn);
+  ImGui::SameLine();
+  ImGui::Checkbox("level of detail", &state.levelOfDetail);
   ImGui::Separator();
   lightingSection(model, next);
   editSection(model, next);

@@ -13,7 +13,9 @@ namespace app {
 struct PanelState {
   float exposure = 1;
   bool wireframe = false;
+  bool levelOfDetail = true;    // far or evenly lit surfaces drawn as their outlines (level_of_detail.h)
   size_t chunksDrawn = 0, chunksCulled = 0;  // the display's chunks in the last frame, shown
+  size_t trianglesDrawn = 0;                  // and its triangles, shown
   bool screenshotRequested = false;
   std::string lastScreenshot;   // path of the last screenshot, shown
   bool autoExposureRequested = false;

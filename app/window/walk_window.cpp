@@ -218,6 +218,7 @@ void writeViewStats(const std::string& path, const ViewRecord& record) {
       {"vertices", record.vertices},
       {"chunks_drawn", record.chunks.chunksDrawn},
       {"chunks_culled", record.chunks.chunksCulled},
+      {"triangles_drawn", record.chunks.triangles},
       {"shots", record.shots},
       {"unshot_fraction", record.unshotFraction},
       {"peak_rss_mb", peakResidentMegabytes()},
@@ -271,6 +272,7 @@ std::optional<engine::OpenedScene> walkScene(GLFWwindow* window, const ViewOptio
     ImGui::NewFrame();
     panel.chunksDrawn = renderer.lastFrame().chunksDrawn;
     panel.chunksCulled = renderer.lastFrame().chunksCulled;
+    panel.trianglesDrawn = renderer.lastFrame().triangles;
     drawScenePanel(session.panel(), panel, input);
     ImGui::Render();
 
@@ -285,7 +287,9 @@ std::optional<engine::OpenedScene> walkScene(GLFWwindow* window, const ViewOptio
       settings.exposure = panel.exposure;
       settings.wireframe = panel.wireframe;
       settings.highlight = session.selected();
-      renderer.draw(settings);
+      settings.levelOfDetail = panel.levelOfDetail;
+      settings.toneMapVertices = true;
+      renderer.draw(session.display(), settings);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
       const bool last = options.frames > 0 && frame >= options.frames;

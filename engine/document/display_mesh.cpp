@@ -2,6 +2,7 @@
 
 #include "engine/document/lit_scene.h"
 #include "engine/geometry/surface_mesh.h"
+#include "mesher/triangulate.h"
 #include "radiosity/ambient.h"
 #include "util/check.h"
 
@@ -18,6 +19,20 @@ namespace engine {
 namespace {
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// The polygon's triangles over its own points (the mesh's first vertices), when they tile the
+// `area` its elements tile; else none.
+std::vector<uint32_t> outlineOf(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh, double area) {
+  std::vector<uint32_t> outline;
+  double covered = 0;
+  for (const std::array<uint32_t, 3>& t : mesher::triangulate(polygon)) {
+    if (std::max({t[0], t[1], t[2]}) >= mesh.vertices.size()) return {};
+    covered += 0.5 * mesher::orient2(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    outline.insert(outline.end(), t.begin(), t.end());
+  }
+  if (!(std::abs(covered - area) <= 1e-9 * area)) return {};
+  return outline;
+}
 
 glm::dvec3 middleOfBounds(const MeshedScene& meshed) {
   bool first = true;
@@ -55,11 +70,13 @@ SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const 
   std::vector<std::pair<uint32_t, uint32_t>> edges;
   edges.reserve(4 * patches.elements.size());
   display.triangles.reserve(6 * patches.elements.size());
+  double surfaceArea = 0;
   for (const auto& element : patches.elements) {
     const size_t n = element[3] == mesher::Mesh::kNone ? 3 : 4;
     double area = 0;
     for (size_t k = 0; k < n; ++k)
       area += 0.5 * mesher::orient2(patches.vertices[element[0]], patches.vertices[element[k]], patches.vertices[element[(k + 1) % n]]);
+    surfaceArea += area;
     for (size_t k = 0; k < n; ++k) {
       display.area[element[k]] += static_cast<float>(area / static_cast<double>(n));
       edges.push_back(std::minmax(element[k], element[(k + 1) % n]));
@@ -73,6 +90,12 @@ SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const 
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   display.edges.reserve(2 * edges.size());
   for (const auto& [a, b] : edges) display.edges.insert(display.edges.end(), {a, b});
+  display.outline = outlineOf(meshed.polygon, patches, surfaceArea);
+  if (!display.positions.empty()) {
+    glm::vec3 low = display.positions.front(), high = low;
+    for (const glm::vec3& p : display.positions) low = glm::min(low, p), high = glm::max(high, p);
+    display.extent = glm::length(high - low);
+  }
   return display;
 }
 

@@ -27,6 +27,12 @@ struct SurfaceDisplay {
   std::vector<float> area;           // per vertex: its share of its elements' areas (an n-gon's over n)
   std::vector<uint32_t> triangles;   // 3 indices per triangle, counter-clockwise from the front
   std::vector<uint32_t> edges;       // 2 indices per element edge, each edge once
+  // The coarsest level of detail: the surface's polygon alone, 3 indices per triangle into the
+  // same vertices (its own points, which come first), tiling exactly what the elements tile, for
+  // a surface too small on the screen or too evenly lit for its elements to show. Empty when the
+  // polygon's triangles would not tile the elements' area (the surface is then always drawn whole).
+  std::vector<uint32_t> outline;
+  float extent = 0;                  // the diagonal of its positions' bounds
   size_t elements = 0, quads = 0;    // mesh elements (quads are drawn as two triangles)
 };
 

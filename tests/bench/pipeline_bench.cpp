@@ -3,6 +3,8 @@
 #include "app/gl/osmesa_context.h"
 #include "app/gl/scene_renderer.h"
 #include "engine/document/display_mesh.h"
+#include "engine/document/lit_scene.h"
+#include "engine/io/load_scene.h"
 #include "engine/io/scene_loader.h"
 #include "engine/session/view_camera.h"
 
@@ -74,11 +76,59 @@ void headlessFrame(benchmark::State& state) {
   frame.exposure = static_cast<float>(engine::autoExposure(mesh));
   frame.wireframe = state.range(1) != 0;
   for (auto _ : state) {
-    renderer.draw(frame);
+    renderer.draw(mesh, frame);
     benchmark::DoNotOptimize(app::readFramebuffer(width, height, GL_FRONT).pixels.data());
   }
   state.SetLabel(std::string(name) + (frame.wireframe ? " wireframe" : ""));
 }
 BENCHMARK(headlessFrame)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+
+// One 1280x720 frame of the kitchen lit to 1% unshot, or of a large model (../shared/
+// scenes-external with the sidecars of tests/app/sidecars) after its first shots, from the camera
+// it opens with, as the window draws it without the solver: every element (range(1) 0) or at the
+// level of detail (1); with range(2), a new snapshot's radiance taken first, as while the light
+// changes. What llvmpipe costs apart from the solver's share of the cores.
+void modelFrame(benchmark::State& state) {
+  struct Model {
+    const char *name, *path, *sidecar;
+    uint64_t shots;
+  };
+  const std::string source = WALKRAD_SOURCE, external = source + "/../shared/scenes-external/";
+  const Model models[] = {{"kitchen", "/assets/kitchen.json", "", UINT64_MAX},
+                          {"sponza", "sponza-crytek/sponza.gltf", "sponza", 3},
+                          {"white_room", "white-room-living/white_room.gltf", "white_room", 3}};
+  const Model& model = models[state.range(0)];
+  const int width = 1280, height = 720;
+  const engine::Scene scene =
+      *model.sidecar ? engine::loadScene(external + model.path, {.units = "", .sidecar = source + "/tests/app/sidecars/" + model.sidecar + ".walkrad.json"})
+                     : engine::loadScene(source + model.path);
+  engine::LitScene lit(scene, engine::meshScene(scene), {});
+  lit.solve(0.01, model.shots);
+  engine::DisplayMesh mesh = engine::displayMesh(scene, lit.meshed());
+  engine::setRadiance(mesh, lit.solver());
+  const app::OsmesaContext context(width, height);
+  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&app::OsmesaContext::procAddress)))
+    throw std::runtime_error("no GL");
+  app::SceneRenderer renderer;
+  renderer.upload(mesh);
+  engine::ViewCamera camera;
+  engine::chooseCamera(scene, "", camera);
+  app::FrameSettings frame;
+  frame.clipFromDisplay = engine::clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
+  frame.width = width;
+  frame.height = height;
+  frame.exposure = static_cast<float>(engine::autoExposure(mesh));
+  frame.levelOfDetail = state.range(1) != 0;
+  for (auto _ : state) {
+    if (state.range(2) != 0) renderer.updateRadiance(mesh);
+    renderer.draw(mesh, frame);
+    benchmark::DoNotOptimize(app::readFramebuffer(width, height, GL_FRONT).pixels.data());
+  }
+  state.SetLabel(std::string(model.name) + (frame.levelOfDetail ? " level of detail" : " every element") +
+                 (state.range(2) != 0 ? ", new radiance" : ""));
+  state.counters["triangles"] = static_cast<double>(renderer.lastFrame().triangles);
+  state.counters["chunks_drawn"] = static_cast<double>(renderer.lastFrame().chunksDrawn);
+}
+BENCHMARK(modelFrame)->ArgsProduct({{0, 1, 2}, {0, 1}, {0, 1}})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(10);
 
 }  // namespace

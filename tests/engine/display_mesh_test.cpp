@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
 #include <random>
 
 namespace engine {
@@ -48,6 +51,61 @@ TEST(DisplayMesh, TrianglesTileEverySurface) {
       surfaceArea += s.area;
     }
     EXPECT_NEAR(vertexArea, surfaceArea, 1e-5 * surfaceArea);
+  }
+}
+
+// Every surface's outline (the coarsest level of detail) tiles what its elements tile, faces the
+// surface's front, uses only the surface's own points, and its border is the polygon's rings edge
+// for edge, on which the elements' boundary points lie: drawing a surface as its outline leaves
+// no gap its elements would not.
+TEST(DisplayMesh, TheOutlineTilesTheSurfaceWithItsOwnPoints) {
+  for (const char* name : {"cornell.json", "office.json", "kitchen.json"}) {
+    SCOPED_TRACE(name);
+    const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/" + name);
+    const DisplayMesh mesh = displayMesh(scene, meshScene(scene));
+    for (uint32_t i = 0; i < scene.surfaces.size(); ++i) {
+      const Surface& s = scene.surfaces[i];
+      const SurfaceDisplay& display = mesh.surfaces[i];
+      SCOPED_TRACE(s.face);
+      ASSERT_FALSE(display.outline.empty());
+      std::vector<std::pair<uint32_t, uint32_t>> ringEdges;
+      uint32_t first = 0;
+      for (size_t r = 0; r <= s.holes.size(); ++r) {
+        const auto n = static_cast<uint32_t>(r == 0 ? s.outer.size() : s.holes[r - 1].size());
+        for (uint32_t k = 0; k < n; ++k) ringEdges.push_back(std::minmax(first + k, first + (k + 1) % n));
+        first += n;
+      }
+      double area = 0;
+      std::map<std::pair<uint32_t, uint32_t>, int> edgeUses;
+      for (size_t t = 0; t < display.outline.size(); t += 3) {
+        for (size_t k = 0; k < 3; ++k) {
+          EXPECT_LT(display.outline[t + k], first);  // the surface's own points only
+          ++edgeUses[std::minmax(display.outline[t + k], display.outline[t + (k + 1) % 3])];
+        }
+        const glm::dvec3 a{display.positions[display.outline[t]]}, b{display.positions[display.outline[t + 1]]},
+            c{display.positions[display.outline[t + 2]]};
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        EXPECT_GE(glm::dot(n, s.normal), 0);
+        area += 0.5 * glm::length(n);
+      }
+      EXPECT_NEAR(area, s.area, 1e-4 * s.area);
+      std::vector<std::pair<uint32_t, uint32_t>> border;
+      for (const auto& [edge, uses] : edgeUses)
+        if (uses == 1) border.push_back(edge);
+      std::sort(ringEdges.begin(), ringEdges.end());
+      EXPECT_EQ(border, ringEdges);
+    }
+  }
+}
+
+// The extent is the diagonal of the surface's bounds: a 2 x 1 wall's is sqrt(5).
+TEST(DisplayMesh, TheExtentIsTheDiagonalOfTheBounds) {
+  const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/office.json");
+  const DisplayMesh mesh = displayMesh(scene, meshScene(scene));
+  for (uint32_t i = 0; i < scene.surfaces.size(); ++i) {
+    glm::dvec3 low{INFINITY}, high{-INFINITY};
+    for (const Vec3& p : scene.surfaces[i].outer) low = glm::min(low, p), high = glm::max(high, p);
+    EXPECT_NEAR(mesh.surfaces[i].extent, glm::length(high - low), 1e-5 * glm::length(high - low));
   }
 }
 
