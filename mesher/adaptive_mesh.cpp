@@ -447,20 +447,21 @@ MeshDelta AdaptiveMesh::removeHole(int hole) {
   return delta;
 }
 
-std::optional<AdaptiveMesh::HoleChange> AdaptiveMesh::replaceHoles(std::span<const int> remove,
-                                                                   std::span<const Ring2> insert) {
+std::vector<size_t> AdaptiveMesh::activeHoles(std::span<const int> ids) const {
+  std::vector<size_t> active;
+  for (const int h : ids)
+    if (h >= 0 && static_cast<size_t>(h) < holes_.size() && holes_[static_cast<size_t>(h)].active &&
+        std::find(active.begin(), active.end(), static_cast<size_t>(h)) == active.end())
+      active.push_back(static_cast<size_t>(h));
+  return active;
+}
+
+bool AdaptiveMesh::holesFit(std::span<const int> remove, std::span<const Ring2> insert) {
+  // The holes that go leave the tree (a moved cut-out may overlap where it was) and the rings are
+  // stored; then everything is put back as it was, the leaves that stored the holes from copies.
   Quadtree& tree = built_.tree;
   const size_t holesBefore = holes_.size();
-  std::vector<size_t> going;
-  for (const int h : remove)
-    if (h >= 0 && static_cast<size_t>(h) < holesBefore && holes_[static_cast<size_t>(h)].active &&
-        std::find(going.begin(), going.end(), static_cast<size_t>(h)) == going.end())
-      going.push_back(static_cast<size_t>(h));
-
-  // A trial first: the holes that go leave the tree (a moved cut-out may overlap where it was)
-  // and the rings are stored; then everything is put back as it was, the leaves that stored the
-  // holes from copies. The rings' needs do not depend on the leaves they start from, so rings
-  // that fit in the trial fit below.
+  const std::vector<size_t> going = activeHoles(remove);
   std::vector<int32_t> oldLeaves;
   for (size_t h : going) tree.leavesIn(holes_[h].lo, holes_[h].hi, oldLeaves);
   std::vector<std::pair<int32_t, Quadrant>> kept;
@@ -476,7 +477,15 @@ std::optional<AdaptiveMesh::HoleChange> AdaptiveMesh::replaceHoles(std::span<con
   for (size_t h : going)
     for (uint32_t i = 0; i < holes_[h].count; ++i) tree.input.removed[holes_[h].firstEdge + i] = 0;
   handsOver_ = markShallowEdges(tree.input, built_.frame.planePerTree());
-  if (!fits) return std::nullopt;
+  return fits;
+}
+
+std::optional<AdaptiveMesh::HoleChange> AdaptiveMesh::replaceHoles(std::span<const int> remove,
+                                                                   std::span<const Ring2> insert) {
+  // The rings' needs do not depend on the leaves they start from, so rings that fit in the trial
+  // fit below.
+  if (!holesFit(remove, insert)) return std::nullopt;
+  const std::vector<size_t> going = activeHoles(remove);
 
   // The change itself: each hole removed as removeHole does, then each ring inserted as
   // insertHole does, so that a cut-out moved and moved back is an insert and a remove, which

@@ -90,6 +90,9 @@ class AdaptiveMesh {
     MeshDelta delta;
   };
   std::optional<HoleChange> replaceHoles(std::span<const int> remove, std::span<const Ring2> insert);
+  // Whether replaceHoles(remove, insert) would make the change; the mesh stays as it is (only
+  // vertices() may grow, by unused points). For a caller that must know before changing anything.
+  bool holesFit(std::span<const int> remove, std::span<const Ring2> insert);
 
  private:
   struct Slot {
@@ -119,6 +122,8 @@ class AdaptiveMesh {
   void takeBackRings(size_t holesBefore);
   // The rest of an insertion of hole `hole` just added (addRing): its sides, balance, emission.
   MeshDelta cutOut(size_t hole, uint32_t firstNewVertex);
+  // The ids among `ids` of holes that are there, each once.
+  std::vector<size_t> activeHoles(std::span<const int> ids) const;
   // removeHole's work for an active hole.
   MeshDelta fillIn(size_t hole);
   // The ring in tree coordinates, clockwise (the polygon's inside on the left of each edge), when

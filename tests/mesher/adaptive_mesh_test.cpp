@@ -428,6 +428,8 @@ TEST(AdaptiveMeshHoles, AReplacementRefusedChangesNothing) {
   const Ring2 acrossTheBorder{{230, 10}, {250, 10}, {250, 20}, {230, 20}};
   const Ring2 besideIt{{100, 10}, {110, 10}, {110, 20}, {100, 20}};
   const std::vector<Ring2> rings{besideIt, acrossTheBorder};  // the first fits, the second does not
+  EXPECT_FALSE(mesh.holesFit(old, rings));
+  EXPECT_TRUE(mesh.holesFit(old, std::span(&besideIt, 1)));
   EXPECT_FALSE(mesh.replaceHoles(old, rings));
   EXPECT_EQ(ids(mesh), before);
   EXPECT_EQ(mesh.snapshot().elements, snapshot.elements);
