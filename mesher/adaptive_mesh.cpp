@@ -436,6 +436,18 @@ MeshDelta AdaptiveMesh::fillIn(size_t hole) {
   }
   around.clear();
   tree.leavesIn(h.lo, h.hi, around);
+  // Quadrants around the box split only to balance against leaves that merged may merge back too
+  // (a cut-out dragged across a floor would leave a trail of them).
+  std::vector<int32_t> candidates, across;
+  for (int32_t q : around)
+    for (Side side : kSides) {
+      across.clear();
+      tree.neighbors(q, side, across);
+      for (int32_t n : across) candidates.push_back(tree[n].parent);
+    }
+  mergeUnneededBalanceSplits(std::move(candidates));
+  around.clear();
+  tree.leavesIn(h.lo, h.hi, around);
   balanceAround(tree, around);
   return applyChanges(firstNewVertex, restyled);
 }
