@@ -28,10 +28,17 @@ bool inTree(const Quadtree& tree, int32_t q) {
   return true;
 }
 
+// Adds delta `d`'s elements to `total`'s.
+void append(MeshDelta& total, const MeshDelta& d) {
+  total.removed.insert(total.removed.end(), d.removed.begin(), d.removed.end());
+  total.added.insert(total.added.end(), d.added.begin(), d.added.end());
+}
+
 }  // namespace
 
-AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings)
+AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings, size_t removableHoles)
     : polygon_(polygon), built_(buildMeshTree(polygon, settings)) {
+  CHECK_LE(removableHoles, polygon.holes.size());
   handsOver_ = std::find(built_.tree.input.shallow.begin(), built_.tree.input.shallow.end(), 1) != built_.tree.input.shallow.end();
   std::vector<int32_t> leaves = built_.tree.leaves(), shortLeaves;
   emitter_ = std::make_unique<LeafEmitter>(polygon, built_, leaves.size());
@@ -53,6 +60,18 @@ AdaptiveMesh::AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& 
   }
   // The limit is meshing's; how far to refine is the caller's to say.
   built_.tree.quadrantBudget = SIZE_MAX;
+  // The tree's input holds the rings in order, each ring's edge k leaving its vertex k.
+  const QuadtreeInput& in = built_.tree.input;
+  auto first = static_cast<uint32_t>(polygon.outer.size());
+  for (size_t h = 0; h < polygon.holes.size(); ++h) {
+    const auto count = static_cast<uint32_t>(polygon.holes[h].size());
+    if (h + removableHoles >= polygon.holes.size()) {
+      Vec2 lo = in.vertices[first], hi = lo;
+      for (uint32_t i = first; i < first + count; ++i) lo = glm::min(lo, in.vertices[i]), hi = glm::max(hi, in.vertices[i]);
+      holes_.push_back({first, first, count, lo, hi, true});
+    }
+    first += count;
+  }
 }
 
 AdaptiveMesh::~AdaptiveMesh() = default;
@@ -236,10 +255,7 @@ MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
                               const std::function<bool(ElementId)>& coarsenIt) {
   MeshDelta total;
   total.firstNewVertex = static_cast<uint32_t>(vertices().size());
-  auto collect = [&](const MeshDelta& d) {
-    total.removed.insert(total.removed.end(), d.removed.begin(), d.removed.end());
-    total.added.insert(total.added.end(), d.added.begin(), d.added.end());
-  };
+  const auto collect = [&](const MeshDelta& d) { append(total, d); };
   for (ElementId e : elements())
     if (alive(e) && refineIt(e)) collect(refineQuadrant(e));
   // Coarsening asks each of the four siblings: merge only when every one agrees.
@@ -255,7 +271,13 @@ MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
     }
     if (allAgree) collect(coarsenQuadrant(e));
   }
-  // Elements both added and removed within the pass never reached the caller.
+  settle(total);
+  DCHECK_EQ(tVertices(), 0u);
+  return total;
+}
+
+void AdaptiveMesh::settle(MeshDelta& total) const {
+  // Elements both added and removed within the run never reached the caller.
   std::unordered_set<uint64_t> addedHere;
   for (ElementId e : total.added) addedHere.insert(uint64_t{e.slot} << 32 | e.generation);
   std::vector<ElementId> removed, added;
@@ -266,36 +288,40 @@ MeshDelta AdaptiveMesh::adapt(const std::function<bool(ElementId)>& refineIt,
   total.removed = std::move(removed);
   total.added = std::move(added);
   total.vertexCount = static_cast<uint32_t>(vertices().size());
-  DCHECK_EQ(tVertices(), 0u);
-  return total;
 }
 
-std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
-  Quadtree& tree = built_.tree;
-  QuadtreeInput& in = tree.input;
-  if (ring.size() < 3 || !isSimple(ring) || signedArea(ring) == 0) return {-1, {}};
-
-  // In tree coordinates, clockwise (the polygon's inside on the left of each edge).
-  Ring2 plane = ring;
-  if (signedArea(plane) > 0) std::reverse(plane.begin(), plane.end());
+std::optional<Ring2> AdaptiveMesh::fittingTreeRing(const Ring2& plane) const {
+  const QuadtreeInput& in = built_.tree.input;
+  if (plane.size() < 3 || !isSimple(plane) || signedArea(plane) == 0) return std::nullopt;
   Ring2 points;
   for (const Vec2& p : plane) points.push_back(treePoint(built_.frame, p));
-  if (!isSimple(points)) return {-1, {}};
-
+  if (!isSimple(points)) return std::nullopt;
   // Strictly inside the polygon as it is: every point inside, no edge meeting an active edge,
-  // no active edge's end inside the ring (a hole within the hole).
-  const double clearance = tree.gridSnap;
+  // no active edge's end inside the ring (a hole within the hole). Apart by the clearance the
+  // mesher asks of a polygon's vertices from its edges (kClearanceOverRounding), the ring's own
+  // included: nearer, the mesher would refuse the polygon with the ring as too fine.
+  const double clearance = std::max(built_.tree.gridSnap, kClearanceOverRounding * built_.frame.rounding);
   for (const Vec2& p : points)
-    if (!rayCastInside(in, p)) return {-1, {}};
+    if (!rayCastInside(in, p)) return std::nullopt;
+  for (size_t i = 0; i < points.size(); ++i)
+    for (size_t k = 0; k < points.size(); ++k) {
+      const size_t next = (k + 1) % points.size();
+      if (k != i && next != i && segmentDistance(points[i], points[i], points[k], points[next]) <= clearance)
+        return std::nullopt;
+    }
   for (uint32_t e = 0; e < in.edges.size(); ++e) {
     if (!in.active(e)) continue;
     const Vec2 a = in.vertices[in.edges[e][0]], b = in.vertices[in.edges[e][1]];
-    if (containsPoint(points, a)) return {-1, {}};
+    if (containsPoint(points, a)) return std::nullopt;
     for (size_t i = 0; i < points.size(); ++i)
-      if (segmentDistance(a, b, points[i], points[(i + 1) % points.size()]) <= clearance) return {-1, {}};
+      if (segmentDistance(a, b, points[i], points[(i + 1) % points.size()]) <= clearance) return std::nullopt;
   }
+  return points;
+}
 
-  // Add the ring to the tree's input.
+bool AdaptiveMesh::storeRing(const Ring2& plane, const Ring2& points) {
+  Quadtree& tree = built_.tree;
+  QuadtreeInput& in = tree.input;
   const auto firstVertex = static_cast<uint32_t>(in.vertices.size());
   const auto firstEdge = static_cast<uint32_t>(in.edges.size());
   const auto count = static_cast<uint32_t>(points.size());
@@ -309,24 +335,43 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
   }
   in.removed.resize(in.edges.size(), 0);
   handsOver_ = markShallowEdges(in, built_.frame.planePerTree());
-  const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
   emitter_->addInputVertices(firstVertex, plane);
+  holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
 
-  // Store its vertices and edges (5.2); a ring needing more levels than the tree has is refused.
+  // Its vertices and edges (5.2); a ring needing more levels than the tree has is refused.
   bool stored = true;
   for (uint32_t i = 0; i < count && stored; ++i) stored = tree.insertVertex(firstVertex + i);
   for (uint32_t i = 0; i < count && stored; ++i) stored = tree.insertEdge(0, firstEdge + i);
-  if (!stored) {
-    tree.undoChanges(0);
-    for (uint32_t i = 0; i < count; ++i) tree.forgetVertex(firstVertex + i);
-    for (uint32_t i = 0; i < count; ++i) tree.forgetEdge(firstEdge + i);
-    return {-1, {}};
-  }
+  return stored;
+}
 
+void AdaptiveMesh::takeBackRings(size_t holesBefore) {
+  Quadtree& tree = built_.tree;
+  tree.undoChanges(0);
+  for (size_t h = holesBefore; h < holes_.size(); ++h) {
+    const InsertedHole& hole = holes_[h];
+    for (uint32_t i = 0; i < hole.count; ++i) tree.forgetVertex(hole.firstVertex + i);
+    for (uint32_t i = 0; i < hole.count; ++i) tree.forgetEdge(hole.firstEdge + i);
+  }
+  holes_.resize(holesBefore);
+}
+
+bool AdaptiveMesh::addRing(const Ring2& ring) {
+  // Clockwise in the plane as in the tree (the polygon's inside on the left of each edge).
+  Ring2 plane = ring;
+  if (signedArea(plane) > 0) std::reverse(plane.begin(), plane.end());
+  const std::optional<Ring2> points = fittingTreeRing(plane);
+  return points && storeRing(plane, *points);
+}
+
+MeshDelta AdaptiveMesh::cutOut(size_t hole, uint32_t firstNewVertex) {
+  Quadtree& tree = built_.tree;
+  const InsertedHole& h = holes_[hole];
+  const Ring2 points(tree.input.vertices.begin() + h.firstVertex, tree.input.vertices.begin() + h.firstVertex + h.count);
   // Leaves with no edge inside the ring are outside the polygon now. Every leaf the ring's box
   // touches may have taken a vertex or an edge without splitting: all are emitted again.
   std::vector<int32_t> around;
-  tree.leavesIn(lo, hi, around);
+  tree.leavesIn(h.lo, h.hi, around);
   for (int32_t q : around) {
     const Quadrant& leaf = tree[q];
     if (leaf.edgeCount > 0 || leaf.status == QuadStatus::Outside) continue;
@@ -339,15 +384,23 @@ std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
   for (const Quadtree::Change& change : tree.changes)
     if (!change.isMerge()) tree.leavesBelow(change.quadrant, seeds);
   balanceAround(tree, std::move(seeds));
-  holes_.push_back({firstVertex, firstEdge, count, lo, hi, true});
-  MeshDelta delta = applyChanges(firstNewVertex, around);
-  DCHECK_EQ(tVertices(), 0u);
-  return {static_cast<int>(holes_.size() - 1), std::move(delta)};
+  return applyChanges(firstNewVertex, around);
 }
 
-MeshDelta AdaptiveMesh::removeHole(int hole) {
-  if (hole < 0 || static_cast<size_t>(hole) >= holes_.size() || !holes_[static_cast<size_t>(hole)].active) return {};
-  InsertedHole& h = holes_[static_cast<size_t>(hole)];
+std::pair<int, MeshDelta> AdaptiveMesh::insertHole(const Ring2& ring) {
+  const size_t holesBefore = holes_.size();
+  const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
+  if (!addRing(ring)) {
+    takeBackRings(holesBefore);
+    return {-1, {}};
+  }
+  MeshDelta delta = cutOut(holesBefore, firstNewVertex);
+  DCHECK_EQ(tVertices(), 0u);
+  return {static_cast<int>(holesBefore), std::move(delta)};
+}
+
+MeshDelta AdaptiveMesh::fillIn(size_t hole) {
+  InsertedHole& h = holes_[hole];
   h.active = false;
   Quadtree& tree = built_.tree;
   const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
@@ -383,10 +436,85 @@ MeshDelta AdaptiveMesh::removeHole(int hole) {
   }
   around.clear();
   tree.leavesIn(h.lo, h.hi, around);
+  // Quadrants around the box split only to balance against leaves that merged may merge back too
+  // (a cut-out dragged across a floor would leave a trail of them).
+  std::vector<int32_t> candidates, across;
+  for (int32_t q : around)
+    for (Side side : kSides) {
+      across.clear();
+      tree.neighbors(q, side, across);
+      for (int32_t n : across) candidates.push_back(tree[n].parent);
+    }
+  mergeUnneededBalanceSplits(std::move(candidates));
+  around.clear();
+  tree.leavesIn(h.lo, h.hi, around);
   balanceAround(tree, around);
-  MeshDelta delta = applyChanges(firstNewVertex, restyled);
+  return applyChanges(firstNewVertex, restyled);
+}
+
+MeshDelta AdaptiveMesh::removeHole(int hole) {
+  if (hole < 0 || static_cast<size_t>(hole) >= holes_.size() || !holes_[static_cast<size_t>(hole)].active) return {};
+  MeshDelta delta = fillIn(static_cast<size_t>(hole));
   DCHECK_EQ(tVertices(), 0u);
   return delta;
+}
+
+std::vector<size_t> AdaptiveMesh::activeHoles(std::span<const int> ids) const {
+  std::vector<size_t> active;
+  for (const int h : ids)
+    if (h >= 0 && static_cast<size_t>(h) < holes_.size() && holes_[static_cast<size_t>(h)].active &&
+        std::find(active.begin(), active.end(), static_cast<size_t>(h)) == active.end())
+      active.push_back(static_cast<size_t>(h));
+  return active;
+}
+
+bool AdaptiveMesh::holesFit(std::span<const int> remove, std::span<const Ring2> insert) {
+  // The holes that go leave the tree (a moved cut-out may overlap where it was) and the rings are
+  // stored; then everything is put back as it was, the leaves that stored the holes from copies.
+  Quadtree& tree = built_.tree;
+  const size_t holesBefore = holes_.size();
+  const std::vector<size_t> going = activeHoles(remove);
+  std::vector<int32_t> oldLeaves;
+  for (size_t h : going) tree.leavesIn(holes_[h].lo, holes_[h].hi, oldLeaves);
+  std::vector<std::pair<int32_t, Quadrant>> kept;
+  for (int32_t q : oldLeaves) kept.emplace_back(q, tree[q]);
+  for (size_t h : going) {
+    for (uint32_t i = 0; i < holes_[h].count; ++i) tree.forgetEdge(holes_[h].firstEdge + i);
+    for (uint32_t i = 0; i < holes_[h].count; ++i) tree.forgetVertex(holes_[h].firstVertex + i);
+  }
+  bool fits = true;
+  for (size_t k = 0; k < insert.size() && fits; ++k) fits = addRing(insert[k]);
+  takeBackRings(holesBefore);
+  for (const auto& [q, quadrant] : kept) tree.quadrants[static_cast<size_t>(q)] = quadrant;
+  for (size_t h : going)
+    for (uint32_t i = 0; i < holes_[h].count; ++i) tree.input.removed[holes_[h].firstEdge + i] = 0;
+  handsOver_ = markShallowEdges(tree.input, built_.frame.planePerTree());
+  return fits;
+}
+
+std::optional<AdaptiveMesh::HoleChange> AdaptiveMesh::replaceHoles(std::span<const int> remove,
+                                                                   std::span<const Ring2> insert) {
+  // The rings' needs do not depend on the leaves they start from, so rings that fit in the trial
+  // fit below.
+  if (!holesFit(remove, insert)) return std::nullopt;
+  const std::vector<size_t> going = activeHoles(remove);
+
+  // The change itself: each hole removed as removeHole does, then each ring inserted as
+  // insertHole does, so that a cut-out moved and moved back is an insert and a remove, which
+  // undo each other.
+  HoleChange change;
+  change.delta.firstNewVertex = static_cast<uint32_t>(vertices().size());
+  for (size_t h : going) append(change.delta, fillIn(h));
+  for (const Ring2& ring : insert) {
+    const auto firstNewVertex = static_cast<uint32_t>(vertices().size());
+    const size_t hole = holes_.size();
+    CHECK(addRing(ring));
+    append(change.delta, cutOut(hole, firstNewVertex));
+    change.inserted.push_back(static_cast<int>(hole));
+  }
+  settle(change.delta);
+  DCHECK_EQ(tVertices(), 0u);
+  return change;
 }
 
 }  // namespace mesher

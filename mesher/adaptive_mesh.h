@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <span>
 #include <vector>
 
 namespace mesher {
@@ -35,7 +37,9 @@ class AdaptiveMesh {
  public:
   // Meshes the polygon as meshPolygon() does, within the settings' work limit; throws MeshRefused
   // as it does. Later refines and inserted holes are not limited: the caller says how far to go.
-  AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings);
+  // The polygon's last `removableHoles` holes (cut-outs it was meshed with, that may go again)
+  // take the ids 0 to removableHoles - 1, as if inserted in that order: removeHole takes them out.
+  AdaptiveMesh(const PolygonWithHoles& polygon, const MeshSettings& settings, size_t removableHoles = 0);
   ~AdaptiveMesh();
   AdaptiveMesh(const AdaptiveMesh&) = delete;
   AdaptiveMesh& operator=(const AdaptiveMesh&) = delete;
@@ -75,6 +79,20 @@ class AdaptiveMesh {
   // the patch size and balance allow (an insert then a remove restores the mesh). Nothing for
   // an unknown or already removed id.
   MeshDelta removeHole(int hole);
+  // The holes `remove` taken out and the rings `insert` cut in as one change (a cut-out that
+  // moved, which may overlap where it was): each ring as insertHole takes it, valid once the
+  // removed holes are gone. Returns the new holes' ids, in the order of `insert`, and the delta;
+  // or nothing when a ring is refused as insertHole refuses it, and then the mesh, its element
+  // ids and its holes are as they were (only vertices() may have grown, by unused points).
+  // Unknown or already removed ids are passed over.
+  struct HoleChange {
+    std::vector<int> inserted;
+    MeshDelta delta;
+  };
+  std::optional<HoleChange> replaceHoles(std::span<const int> remove, std::span<const Ring2> insert);
+  // Whether replaceHoles(remove, insert) would make the change; the mesh stays as it is (only
+  // vertices() may grow, by unused points). For a caller that must know before changing anything.
+  bool holesFit(std::span<const int> remove, std::span<const Ring2> insert);
 
  private:
   struct Slot {
@@ -94,6 +112,27 @@ class AdaptiveMesh {
   void removeLeafElements(int32_t leaf, MeshDelta& delta);
   void emitLeaf(int32_t leaf, MeshDelta& delta);
   void mergeUnneededBalanceSplits(std::vector<int32_t> candidates);
+  // Drops from `total` (a run of changes) the elements both added and removed within it, and
+  // sets its vertex count.
+  void settle(MeshDelta& total) const;
+  // Adds a ring to the tree's input and stores it (insertHole's check and storage, no status,
+  // balance or emission); false when it is refused (the caller takes it back: takeBackRings).
+  bool addRing(const Ring2& ring);
+  // Takes back the rings added since there were `holesBefore` holes, and the tree's changes.
+  void takeBackRings(size_t holesBefore);
+  // The rest of an insertion of hole `hole` just added (addRing): its sides, balance, emission.
+  MeshDelta cutOut(size_t hole, uint32_t firstNewVertex);
+  // The ids among `ids` of holes that are there, each once.
+  std::vector<size_t> activeHoles(std::span<const int> ids) const;
+  // removeHole's work for an active hole.
+  MeshDelta fillIn(size_t hole);
+  // The ring in tree coordinates, clockwise (the polygon's inside on the left of each edge), when
+  // it fits strictly inside the polygon as it is now (insertHole); else nothing.
+  std::optional<Ring2> fittingTreeRing(const Ring2& ring) const;
+  // Adds the ring (plane coordinates, and the same points in tree coordinates) to the tree's
+  // input and stores it; false when it needs more tree levels than there are (the caller takes
+  // the tree's changes back).
+  bool storeRing(const Ring2& plane, const Ring2& points);
 
   PolygonWithHoles polygon_;  // as given (inserted holes not added): the check's measure of scale
   PolygonTree built_;

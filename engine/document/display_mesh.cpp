@@ -20,15 +20,38 @@ namespace {
 
 float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
-// The polygon's triangles over its own points (the mesh's first vertices), when they tile the
-// `area` its elements tile; else none.
+// Per point of the polygon (outer ring, then holes), its vertex in the mesh: the mesh's first
+// vertices, unless holes were inserted later (their points come after the vertices made before);
+// then found by their exact coordinates, which the mesher keeps. Empty when one is missing.
+std::vector<uint32_t> polygonVertices(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh) {
+  std::vector<mesher::Vec2> points = polygon.outer;
+  for (const mesher::Ring2& hole : polygon.holes) points.insert(points.end(), hole.begin(), hole.end());
+  std::vector<uint32_t> vertex(points.size());
+  bool first = points.size() <= mesh.vertices.size();
+  for (uint32_t i = 0; first && i < points.size(); ++i) first = mesh.vertices[i] == points[i], vertex[i] = i;
+  if (first) return vertex;
+  std::map<std::pair<double, double>, uint32_t> byPoint;
+  for (uint32_t v = 0; v < mesh.vertices.size(); ++v) byPoint.emplace(std::pair{mesh.vertices[v].x, mesh.vertices[v].y}, v);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const auto found = byPoint.find({points[i].x, points[i].y});
+    if (found == byPoint.end()) return {};
+    vertex[i] = found->second;
+  }
+  return vertex;
+}
+
+// The polygon's triangles over its own points, when they tile the `area` its elements tile; else
+// none.
 std::vector<uint32_t> outlineOf(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh, double area) {
+  const std::vector<uint32_t> vertex = polygonVertices(polygon, mesh);
+  if (vertex.empty()) return {};
   std::vector<uint32_t> outline;
   double covered = 0;
   for (const std::array<uint32_t, 3>& t : mesher::triangulate(polygon)) {
-    if (std::max({t[0], t[1], t[2]}) >= mesh.vertices.size()) return {};
-    covered += 0.5 * mesher::orient2(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
-    outline.insert(outline.end(), t.begin(), t.end());
+    if (std::max({t[0], t[1], t[2]}) >= vertex.size()) return {};
+    const uint32_t a = vertex[t[0]], b = vertex[t[1]], c = vertex[t[2]];
+    covered += 0.5 * mesher::orient2(mesh.vertices[a], mesh.vertices[b], mesh.vertices[c]);
+    outline.insert(outline.end(), {a, b, c});
   }
   if (!(std::abs(covered - area) <= 1e-9 * area)) return {};
   return outline;

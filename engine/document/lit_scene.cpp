@@ -46,7 +46,9 @@ std::vector<radiosity::SurfaceChange> applyEdit(radiosity::Solver& solver, const
 
 LitScene::LitScene(Scene scene, MeshedScene meshed, const LitSceneSettings& settings)
     : settings_(settings), editor_(std::move(scene), std::move(meshed)), isChanged_(editor_.scene().surfaces.size(), 0) {
-  if (settings.adaptive) adaptation_ = std::make_unique<MeshAdaptation>(editor_.scene(), editor_.meshed(), *settings.adaptive);
+  if (settings.adaptive)
+    adaptation_ = std::make_unique<MeshAdaptation>(editor_.scene(), editor_.meshed(), *settings.adaptive,
+                                                   editor_.adaptiveMeshes());
   restart();
 }
 
@@ -66,7 +68,7 @@ bool LitScene::setPose(uint32_t object, const ObjectPose& pose) {
   const std::vector<EditedSurface> edited = editor_.takeEdited();
   applyEdit(*solver_, editor_.scene(), editor_.meshed(), edited, adaptation_.get());
   // Adapting, a surface moved along loses its refinement: its mesh changes too.
-  for (const EditedSurface& e : edited) markChanged(e.surface, e.meshedAnew || adaptation_);
+  for (const EditedSurface& e : edited) markChanged(e.surface, e.meshedAnew || e.holesChanged || adaptation_);
   return true;
 }
 

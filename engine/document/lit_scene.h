@@ -95,8 +95,9 @@ class LitScene {
   // Throws the solution away and starts again from the emitters, on the meshes as they are.
   void restart();
 
-  // The meshes of the surfaces that changed since the last call (moved with an object, meshed
-  // anew around a footprint, refined or coarsened), each once, by surface in ascending order.
+  // The meshes of the surfaces that changed since the last call (moved with an object, their
+  // cut-outs changed or meshed anew around a footprint, refined or coarsened), each once, by
+  // surface in ascending order.
   std::vector<SurfaceUpdate> takeUpdates();
 
  private:

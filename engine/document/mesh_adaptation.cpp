@@ -6,43 +6,15 @@
 
 namespace engine {
 
-namespace {
-
-// An adaptive mesh of `surfaceMesh`'s polygon when it is that mesh, element for element under the
-// same keys; else null: a triangle that is its own element (meshSurface), which the quadtree
-// cuts up, or refuses where it is finer than the tree resolves.
-std::unique_ptr<mesher::AdaptiveMesh> adaptiveMeshOf(const SurfaceMesh& surfaceMesh, double patchSize) {
-  try {
-    auto adaptive = std::make_unique<mesher::AdaptiveMesh>(surfaceMesh.polygon, mesher::MeshSettings{patchSize});
-    const mesher::Mesh snapshot = adaptive->snapshot();
-    if (snapshot.elements == surfaceMesh.mesh.elements && snapshot.vertices == surfaceMesh.mesh.vertices &&
-        elementKeys(adaptive->elements()) == surfaceMesh.keys)
-      return adaptive;
-  } catch (const mesher::MeshRefused&) {
-  }
-  return nullptr;
-}
-
-}  // namespace
-
-MeshAdaptation::MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const AdaptiveSettings& settings)
+MeshAdaptation::MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const AdaptiveSettings& settings,
+                               AdaptiveMeshes& meshes)
     : scene_(scene),
       meshed_(meshed),
       settings_{.threshold = settings.threshold, .minElementSize = settings.minElementSize},
-      input_(radiosityInput(scene, meshed)) {
-  adaptive_.resize(scene.surfaces.size());
-  unadaptable_.assign(scene.surfaces.size(), 0);
-}
+      adaptive_(meshes),
+      input_(radiosityInput(scene, meshed)) {}
 
 MeshAdaptation::~MeshAdaptation() = default;
-
-mesher::AdaptiveMesh* MeshAdaptation::adaptiveMesh(size_t surface) {
-  if (!adaptive_[surface] && !unadaptable_[surface]) {
-    adaptive_[surface] = adaptiveMeshOf(meshed_.surfaces[surface], scene_.surfaces[surface].patchSize);
-    unadaptable_[surface] = !adaptive_[surface];
-  }
-  return adaptive_[surface].get();
-}
 
 size_t MeshAdaptation::pass(radiosity::Solver& solver) {
   const glm::dvec3 ambient = solver.ambient();
@@ -60,9 +32,10 @@ size_t MeshAdaptation::pass(radiosity::Solver& solver) {
     if (settings.minElementSize <= 0) settings.minElementSize = scene_.surfaces[s].patchSize / 4;
     const radiosity::RefinementVerdicts verdicts = radiosity::judgeElements(input_[s], lit, floor, settings);
     // A surface still at its patch size has nothing to coarsen.
-    if (verdicts.refineCount == 0 && (!adaptive_[s] || verdicts.coarsenCount == 0)) continue;
+    const auto surface = static_cast<uint32_t>(s);
+    if (verdicts.refineCount == 0 && (!adaptive_.find(surface) || verdicts.coarsenCount == 0)) continue;
 
-    mesher::AdaptiveMesh* const adaptive = adaptiveMesh(s);
+    mesher::AdaptiveMesh* const adaptive = adaptive_.get(surface, scene_.surfaces[s], meshed_.surfaces[s]);
     if (!adaptive) continue;
     mesher::AdaptiveMesh& mesh = *adaptive;
     SurfaceMesh& surfaceMesh = meshed_.surfaces[s];
@@ -79,12 +52,10 @@ size_t MeshAdaptation::pass(radiosity::Solver& solver) {
     const mesher::MeshDelta delta = mesh.adapt(verdict(verdicts.refine), verdict(verdicts.coarsen));
     if (delta.empty()) continue;
     changed += delta.removed.size() + delta.added.size();
-    surfaceMesh.mesh = mesh.snapshot();
-    surfaceMesh.keys = elementKeys(mesh.elements());
-    addWorldPositions(scene_.surfaces[s], surfaceMesh);  // the vertices it had keep theirs
+    takeAdaptiveMesh(scene_.surfaces[s], mesh, surfaceMesh);
     input_[s] = radiosityInput(scene_, meshed_, s);
-    changes.push_back({static_cast<uint32_t>(s), input_[s]});
-    changed_.push_back(static_cast<uint32_t>(s));
+    changes.push_back({surface, input_[s]});
+    changed_.push_back(surface);
   }
   if (!changes.empty()) {
     solver.edit(changes);
@@ -115,9 +86,9 @@ std::vector<radiosity::SurfaceChange> MeshAdaptation::edit(const Scene& scene, c
                                                            std::span<const EditedSurface> edited) {
   std::vector<radiosity::SurfaceChange> changes;
   for (const EditedSurface& e : edited) {
-    scene_.surfaces[e.surface] = scene.surfaces[e.surface];  // an edit costs what it changed
-    adaptive_[e.surface].reset();
-    unadaptable_[e.surface] = 0;
+    // An edit costs what it changed. The editor dropped the adaptive meshes of the surfaces it
+    // meshed anew or moved along; those whose cut-outs it changed in place are the meshes taken.
+    scene_.surfaces[e.surface] = scene.surfaces[e.surface];
     meshed_.surfaces[e.surface] = meshed.surfaces[e.surface];
     input_[e.surface] = radiosityInput(scene_, meshed_, e.surface);
     changes.push_back({e.surface, input_[e.surface], e.meshedAnew});

@@ -9,13 +9,13 @@
 // with the power ledgers exact.
 #pragma once
 
+#include "engine/document/adaptive_meshes.h"
 #include "engine/geometry/meshed_scene.h"
 #include "engine/scene.h"
 #include "mesher/adaptive_mesh.h"
 #include "radiosity/adaptive_refinement.h"
 
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -35,9 +35,11 @@ class MeshAdaptation {
   // and refining and coarsening could otherwise take turns.
   static constexpr int kMaxConvergedPasses = 1;
 
-  // Starts from `meshed` (the scene's meshes at their patch sizes). settings.minElementSize 0
-  // stands for a quarter of each surface's patch size.
-  MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const AdaptiveSettings& settings);
+  // Starts from `meshed` (the scene's meshes at their patch sizes), refining in `meshes`, the
+  // document's adaptive meshes of them (SceneEditor::adaptiveMeshes, which outlive this).
+  // settings.minElementSize 0 stands for a quarter of each surface's patch size.
+  MeshAdaptation(const Scene& scene, const MeshedScene& meshed, const AdaptiveSettings& settings,
+                 AdaptiveMeshes& meshes);
   ~MeshAdaptation();
 
   // The meshes as adapted so far, and the solver's input made from them.
@@ -53,11 +55,12 @@ class MeshAdaptation {
   // fraction the caller shoots to). Returns whether a mesh changed.
   bool adaptIfDue(radiosity::Solver& solver, double converge);
 
-  // The scene was edited (objects moved): the surfaces `edited` names take `meshed`'s mesh and
-  // lose their refinement, the others keep theirs. Returns the solver's part of it: their input
-  // now (engine::applyEdit). A surface moved along keeps its mesh's plane coordinates, so the
-  // mesh it takes is one its refinement came from: the keys of the elements it still had go on.
-  // Passes are due again as the light after the edit settles.
+  // The scene was edited (objects moved): the surfaces `edited` names take `meshed`'s mesh, the
+  // others keep theirs. A surface whose cut-outs changed in its adaptive mesh keeps its
+  // refinement away from them; one meshed anew or moved along loses it. Returns the solver's part
+  // of it: their input now (engine::applyEdit). A surface moved along keeps its mesh's plane
+  // coordinates, so the mesh it takes is one its refinement came from: the keys of the elements
+  // it still had go on. Passes are due again as the light after the edit settles.
   std::vector<radiosity::SurfaceChange> edit(const Scene& scene, const MeshedScene& meshed,
                                              std::span<const EditedSurface> edited);
 
@@ -66,16 +69,12 @@ class MeshAdaptation {
   std::vector<uint32_t> takeChangedSurfaces() { return std::exchange(changed_, {}); }
 
  private:
-  // The surface's adaptive mesh, made when it is first refined from SurfaceMesh::polygon: the
-  // mesh the surface has, element for element, whose handles are its keys. Null (and the surface
-  // not refined until it is edited) where no adaptive mesh is that mesh (adaptiveMeshOf).
-  mesher::AdaptiveMesh* adaptiveMesh(size_t surface);
-
   Scene scene_;
   MeshedScene meshed_;
   radiosity::RefinementSettings settings_;
-  std::vector<std::unique_ptr<mesher::AdaptiveMesh>> adaptive_;  // per surface, made when first refined
-  std::vector<uint8_t> unadaptable_;  // per surface: no adaptive mesh reproduces its mesh
+  // Made when a surface is first refined (AdaptiveMeshes::get); null where none is its mesh, and
+  // the surface is then not refined until it is meshed anew.
+  AdaptiveMeshes& adaptive_;
   std::vector<radiosity::Surface> input_;
   double nextPassAt_ = kPassFall;
   int convergedPasses_ = 0;

@@ -9,8 +9,12 @@ void addEdits(std::vector<EditedSurface>& edits, std::span<const EditedSurface> 
   for (const EditedSurface& e : more) {
     const auto at = std::lower_bound(edits.begin(), edits.end(), e.surface,
                                      [](const EditedSurface& a, uint32_t surface) { return a.surface < surface; });
-    if (at != edits.end() && at->surface == e.surface) at->meshedAnew = at->meshedAnew || e.meshedAnew;
-    else edits.insert(at, e);
+    if (at != edits.end() && at->surface == e.surface) {
+      at->meshedAnew = at->meshedAnew || e.meshedAnew;
+      at->holesChanged = at->holesChanged || e.holesChanged;
+    } else {
+      edits.insert(at, e);
+    }
   }
 }
 

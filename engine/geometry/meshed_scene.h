@@ -18,14 +18,17 @@ struct MeshedScene {
 };
 
 // A surface an edit changed (SceneEditor::setPose): moved along with its object, its mesh and
-// its elements' keys going on, or meshed anew.
+// its elements' keys going on; or its cut-outs changed in its adaptive mesh, the elements near
+// them removed and added, the others going on under their keys; or meshed anew.
 struct EditedSurface {
   uint32_t surface = 0;
   bool meshedAnew = false;
+  bool holesChanged = false;
   bool operator==(const EditedSurface&) const = default;
 };
 
-// Adds `more` to `edits` (by surface, each once): a surface meshed anew in either was meshed anew.
+// Adds `more` to `edits` (by surface, each once): a surface meshed anew, or whose cut-outs
+// changed, in either was so.
 void addEdits(std::vector<EditedSurface>& edits, std::span<const EditedSurface> more);
 
 // The most elements a scene's meshes may have in all: far above the large models' (a living room

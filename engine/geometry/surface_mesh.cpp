@@ -58,7 +58,10 @@ std::vector<uint64_t> elementKeys(std::span<const mesher::ElementId> ids) {
 }
 
 mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf) {
-  const PlaneFrame frame = planeFrame(frameOf);
+  return planePolygon(surface, planeFrame(frameOf));
+}
+
+mesher::PolygonWithHoles planePolygon(const Surface& surface, const PlaneFrame& frame) {
   mesher::PolygonWithHoles polygon;
   polygon.outer.reserve(surface.outer.size());
   for (const Vec3& p : surface.outer) polygon.outer.push_back(frame.project(p));

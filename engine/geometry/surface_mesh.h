@@ -67,5 +67,7 @@ void addWorldPositions(const Surface& surface, SurfaceMesh& mesh);
 // The surface's rings in the plane coordinates `frameOf` is meshed in (a surface in the same
 // plane), counter-clockwise about the front normal.
 mesher::PolygonWithHoles planePolygon(const Surface& surface, const Surface& frameOf);
+// The same in `frame`'s coordinates (a mesh's worldFromPlane, moved along with its surface).
+mesher::PolygonWithHoles planePolygon(const Surface& surface, const PlaneFrame& frame);
 
 }  // namespace engine

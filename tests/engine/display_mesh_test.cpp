@@ -98,6 +98,33 @@ TEST(DisplayMesh, TheOutlineTilesTheSurfaceWithItsOwnPoints) {
   }
 }
 
+// After a move the floor's footprints are holes inserted into its adaptive mesh, whose points
+// come after the vertices made before them: the outline still finds them and tiles the floor.
+TEST(DisplayMesh, TheOutlineFollowsFootprintsMovedByHoleInsertion) {
+  const Scene loaded = loadScene(std::string(WALKRAD_ASSETS) + "/box-on-floor.json");
+  SceneEditor editor(loaded, meshScene(loaded));
+  const uint32_t box = *editor.findObject("box");
+  ObjectPose pose = poseOf(editor.scene().objects[box]);
+  pose.position += Vec3{0.3, 0, 0.1};
+  ASSERT_TRUE(editor.setPose(box, pose));
+  const std::vector<uint32_t> remeshed = editor.remeshed();
+  ASSERT_FALSE(remeshed.empty());
+  for (uint32_t s : remeshed) {
+    if (editor.scene().surfaces[s].object == box) continue;
+    const SurfaceMesh& mesh = editor.meshed().surfaces[s];
+    ASSERT_NE(mesh.mesh.vertices[mesh.polygon.outer.size()], mesh.polygon.holes.back().front());  // not in triangulate's order
+    const SurfaceDisplay display = surfaceDisplay(mesh, 0, glm::dmat4{1});
+    ASSERT_FALSE(display.outline.empty());
+    double area = 0;
+    for (size_t t = 0; t < display.outline.size(); t += 3) {
+      const glm::dvec3 a{display.positions[display.outline[t]]}, b{display.positions[display.outline[t + 1]]},
+          c{display.positions[display.outline[t + 2]]};
+      area += 0.5 * glm::length(glm::cross(b - a, c - a));
+    }
+    EXPECT_NEAR(area, editor.scene().surfaces[s].area, 1e-5 * editor.scene().surfaces[s].area);
+  }
+}
+
 // The extent is the diagonal of the surface's bounds: a 2 x 1 wall's is sqrt(5).
 TEST(DisplayMesh, TheExtentIsTheDiagonalOfTheBounds) {
   const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/office.json");

@@ -43,13 +43,19 @@ TEST(EditPath, AMoveChangesOnlyTheObjectAndWhatItStandsOn) {
 
 // A drag of the office's chair in three steps, then the light takes it: the solver is handed
 // the chair's surfaces (moved along, their elements going on by key) and the floor, whose
-// footprints changed (meshed anew), and no other.
+// footprints changed in its adaptive mesh (its elements away from them going on by key; it was
+// meshed anew, every key new), and no other.
 TEST(EditPath, AMoveHandsTheSolverOnlyTheObjectAndTheSurfacesWhoseCutOutsChanged) {
   SceneEditor editor = editorFor("office.json");
   radiosity::SolverSettings settings;
   settings.resolution = 64;
   radiosity::Solver solver(radiosityInput(editor.scene(), editor.meshed()), settings);
   solver.solve(0, 20);
+  std::vector<std::vector<uint64_t>> solverKeysBefore;
+  for (const SurfaceMesh& m : editor.meshed().surfaces) {
+    solverKeysBefore.push_back(m.keys);
+    std::sort(solverKeysBefore.back().begin(), solverKeysBefore.back().end());
+  }
   const uint32_t chair = *editor.findObject("chair");
   ObjectPose pose = poseOf(editor.scene().objects[chair]);
   for (const Vec3 step : {Vec3{0.1, 0, 0}, Vec3{0.1, 0, -0.1}, Vec3{0.1, 0, -0.1}}) {
@@ -62,12 +68,44 @@ TEST(EditPath, AMoveHandsTheSolverOnlyTheObjectAndTheSurfacesWhoseCutOutsChanged
   EXPECT_EQ(solver.stats().editedSurfaces, chairSurfaces + 1);
   for (const radiosity::SurfaceChange& c : changes) {
     const Surface& surface = editor.scene().surfaces[c.surface];
-    EXPECT_EQ(c.meshedAnew, surface.object != chair) << surface.face;
+    EXPECT_FALSE(c.meshedAnew) << surface.face;
     if (surface.object != chair) {
       EXPECT_EQ(editor.scene().objects[surface.object].name + " " + surface.face, "room bottom");
+      // Most of the floor's elements went on.
+      const std::vector<uint64_t>& before = solverKeysBefore[c.surface];
+      size_t kept = 0;
+      for (uint64_t key : c.now.keys) kept += std::binary_search(before.begin(), before.end(), key);
+      EXPECT_GT(kept, before.size() * 3 / 4);
     }
   }
   EXPECT_TRUE(editor.takeEdited().empty());  // taken
+}
+
+// The box of box-on-floor moved across the floor and back, the light taking each move: the
+// floor's elements away from the footprints keep their light (the solver is told no surface was
+// meshed anew), the power ledgers close after every move, and back home the floor has its loaded
+// mesh again.
+TEST(EditPath, AFootprintMovedAndBackKeepsTheFloorsLightAndClosesTheLedger) {
+  SceneEditor editor = editorFor("box-on-floor.json");
+  const MeshedScene loaded = editor.meshed();
+  radiosity::SolverSettings settings;
+  settings.resolution = 64;
+  settings.overshoot = true;
+  radiosity::Solver solver(radiosityInput(editor.scene(), editor.meshed()), settings);
+  solver.solve(0.01);
+  const uint32_t box = *editor.findObject("box");
+  const ObjectPose home = poseOf(editor.scene().objects[box]);
+  for (const Vec3 step : {Vec3{0.3, 0, 0}, Vec3{0.3, 0, 0.3}, Vec3{0}}) {
+    ASSERT_TRUE(editor.setPose(box, {home.position + step, home.rotateYDeg}));
+    for (const radiosity::SurfaceChange& c : applyEdit(solver, editor.scene(), editor.meshed(), editor.takeEdited()))
+      EXPECT_FALSE(c.meshedAnew) << editor.scene().surfaces[c.surface].face;
+    solver.solve(0.01);
+    EXPECT_LT(solver.ledgerResidual(), 1e-12);
+  }
+  for (size_t s = 0; s < loaded.surfaces.size(); ++s) {
+    EXPECT_EQ(editor.meshed().surfaces[s].mesh.elements, loaded.surfaces[s].mesh.elements);
+    EXPECT_EQ(editor.meshed().surfaces[s].positions, loaded.surfaces[s].positions);
+  }
 }
 
 // Mean absolute difference of two solutions' element radiance, over the mean, on the surfaces

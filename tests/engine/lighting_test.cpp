@@ -229,7 +229,8 @@ TEST(Lighting, AdaptiveUpdatesCarryTheirMeshes) {
   EXPECT_EQ(done.snapshot->elements, view.display().elements);
   EXPECT_GT(view.display().elements, loadedElements);
 
-  MeshAdaptation adaptation(scene, meshed, *settings.adaptive);
+  AdaptiveMeshes adaptive(scene.surfaces.size());
+  MeshAdaptation adaptation(scene, meshed, *settings.adaptive, adaptive);
   radiosity::Solver solver(adaptation.input(), settings.solver);
   solveTo(solver, settings.converge, UINT64_MAX, {}, &adaptation);
   std::vector<glm::vec3> here;

@@ -5,6 +5,7 @@
 #include "engine/document/mesh_adaptation.h"
 #include "engine/document/scene_editor.h"
 #include "engine/geometry/meshed_scene.h"
+#include "engine/io/load_scene.h"
 #include "mesher/mesh_check.h"
 #include "tests/engine/test_scenes.h"
 #include "tests/mesher/mesh_expectations.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace engine {
 namespace {
@@ -88,7 +90,8 @@ double relativeDifference(const radiosity::Solver& a, const radiosity::Solver& b
 TEST(MeshAdaptation, RefinesAlongTheShadowAndGathersWhatAFreshSolveGives) {
   const Scene scene = shadowScene();
   const MeshedScene meshed = meshScene(scene);
-  MeshAdaptation adaptation(scene, meshed, {});
+  AdaptiveMeshes adaptive(scene.surfaces.size());
+  MeshAdaptation adaptation(scene, meshed, {}, adaptive);
   radiosity::Solver solver(adaptation.input(), kSettings);
   solveTo(solver, kConverge, UINT64_MAX, {}, &adaptation);
   ASSERT_TRUE(solver.converged(kConverge));
@@ -125,7 +128,7 @@ TEST(MeshAdaptation, RefinesAlongTheShadowAndGathersWhatAFreshSolveGives) {
 // refinement goes again.
 TEST(MeshAdaptation, CoarsensWhereTheShadowWent) {
   SceneEditor editor(shadowScene(), meshScene(shadowScene()));
-  MeshAdaptation adaptation(editor.scene(), editor.meshed(), {});
+  MeshAdaptation adaptation(editor.scene(), editor.meshed(), {}, editor.adaptiveMeshes());
   std::unique_ptr<radiosity::Solver> solver = std::make_unique<radiosity::Solver>(adaptation.input(), kSettings);
   solveTo(*solver, kConverge, UINT64_MAX, {}, &adaptation);
   const ElementSizes before = floorSizes(editor.scene(), adaptation.meshed(), 1.6, 2.4);
@@ -166,7 +169,7 @@ TEST(MeshAdaptation, CoarsensWhereTheShadowWent) {
 TEST(MeshAdaptation, AMovedSurfaceIsRefinedInThePlaneCoordinatesItWasMeshedIn) {
   SceneEditor editor(shadowScene(), meshScene(shadowScene()));
   const MeshedScene loaded = editor.meshed();
-  MeshAdaptation adaptation(editor.scene(), editor.meshed(), {});
+  MeshAdaptation adaptation(editor.scene(), editor.meshed(), {}, editor.adaptiveMeshes());
   auto solver = std::make_unique<radiosity::Solver>(adaptation.input(), kSettings);
   solveTo(*solver, kConverge, UINT64_MAX, {}, &adaptation);
 
@@ -207,6 +210,54 @@ TEST(MeshAdaptation, AMovedSurfaceIsRefinedInThePlaneCoordinatesItWasMeshedIn) {
     EXPECT_LT(changed, before.surfaces.size());
   }
   EXPECT_GT(refined, 0u);
+}
+
+// The floor of box-on-floor refined around the box's shadow, then the box moved 0.3 m: the
+// footprint moves in the floor's adaptive mesh, the one that was refined, so the refinement away
+// from the footprints stays, under the same keys (the floor was meshed anew and lost it all).
+TEST(MeshAdaptation, AMoveKeepsTheRefinementAwayFromTheFootprints) {
+  const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/box-on-floor.json");
+  SceneEditor editor(scene, meshScene(scene));
+  MeshAdaptation adaptation(editor.scene(), editor.meshed(), {}, editor.adaptiveMeshes());
+  auto solver = std::make_unique<radiosity::Solver>(adaptation.input(), kSettings);
+  solveTo(*solver, kConverge, UINT64_MAX, {}, &adaptation);
+  const uint32_t floor = floorOf(scene);
+  const std::set<uint64_t> loadedKeys(editor.meshed().surfaces[floor].keys.begin(), editor.meshed().surfaces[floor].keys.end());
+  const SurfaceMesh before = adaptation.meshed().surfaces[floor];
+  std::set<uint64_t> refined;
+  for (uint64_t key : before.keys)
+    if (!loadedKeys.count(key)) refined.insert(key);
+  ASSERT_GT(refined.size(), 20u);
+
+  const uint32_t box = *editor.findObject("box");
+  ObjectPose pose = poseOf(editor.scene().objects[box]);
+  pose.position.x += 0.3;
+  ASSERT_TRUE(editor.setPose(box, pose));
+  const std::vector<radiosity::SurfaceChange> changes =
+      applyEdit(*solver, editor.scene(), editor.meshed(), editor.takeEdited(), &adaptation);
+  for (const radiosity::SurfaceChange& c : changes) EXPECT_FALSE(c.meshedAnew && c.surface == floor);
+  const SurfaceMesh& after = adaptation.meshed().surfaces[floor];
+  const std::set<uint64_t> keysAfter(after.keys.begin(), after.keys.end());
+  size_t keptRefined = 0;
+  for (size_t e = 0; e < before.keys.size(); ++e) {
+    if (!refined.count(before.keys[e])) continue;
+    if (keysAfter.count(before.keys[e])) {
+      ++keptRefined;
+      continue;
+    }
+    // A refined element that went lay near where the box stood (x 1.2 to 2.1, z 1.3 to 2.2) or
+    // stands (x 0.3 further).
+    Vec3 centroid{0};
+    int n = 0;
+    for (uint32_t v : before.mesh.elements[e])
+      if (v != mesher::Mesh::kNone) centroid += before.positions[v], ++n;
+    EXPECT_LT(distanceToRectangle(centroid / double(n), 1.2, 2.4, 1.3, 2.2), 1.0);
+  }
+  std::printf("refined floor elements: %zu before the move, %zu of them kept\n", refined.size(), keptRefined);
+  EXPECT_GT(keptRefined, refined.size() / 2);
+  mesher::test::expectValidMesh(mesher::checkMesh(after.polygon, after.mesh), false);
+  solveTo(*solver, kConverge, UINT64_MAX, {}, &adaptation);
+  EXPECT_LT(solver->ledgerResidual(), 1e-9);
 }
 
 }  // namespace

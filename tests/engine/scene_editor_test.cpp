@@ -4,12 +4,17 @@
 #include "engine/geometry/meshed_scene.h"
 #include "engine/io/load_limits.h"
 #include "engine/io/load_scene.h"
+#include "mesher/mesh_check.h"
 #include "tests/engine/test_scenes.h"
+#include "tests/mesher/mesh_expectations.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <limits>
+#include <map>
 #include <random>
 
 namespace engine {
@@ -150,11 +155,18 @@ TEST(SceneEditor, AMoveWhoseFootprintLeavesASliverTooFineIsRefusedWhole) {
   MeshedScene meshed = meshScene(loaded);
   SceneEditor editor(std::move(loaded), std::move(meshed));
   const uint32_t box = *editor.findObject("box");
-  ASSERT_TRUE(editor.setPose(box, {Vec3{900000.5, 0, 900000.4}, 0}));  // remeshes the floor
+  ASSERT_TRUE(editor.setPose(box, {Vec3{900000.5, 0, 900000.4}, 0}));  // moves the floor's footprint
   const Scene before = editor.scene();
   const MeshedScene meshedBefore = editor.meshed();
   const std::vector<uint32_t> remeshedBefore = editor.remeshed();
   const Surface& floor = test::surfaceOf(before, "room", "bottom");
+  const auto floorIndex = static_cast<uint32_t>(&floor - before.surfaces.data());
+  ASSERT_EQ(editor.holeEdits().size(), 1u);
+  const mesher::AdaptiveMesh* adaptive = editor.adaptiveMeshes().find(floorIndex);
+  ASSERT_TRUE(adaptive);
+  const std::vector<mesher::ElementId> adaptiveBefore = adaptive->elements();
+  const std::vector<int> footprintsBefore = editor.adaptiveMeshes().footprints(floorIndex);
+  const size_t adaptiveMeshesBefore = editor.adaptiveMeshes().size();
   try {
     editor.setPose(box, {Vec3{900000 + 3e-6, 0, 900000.4}, 0});
     FAIL() << "the move was not refused";
@@ -171,6 +183,11 @@ TEST(SceneEditor, AMoveWhoseFootprintLeavesASliverTooFineIsRefusedWhole) {
     EXPECT_EQ(editor.scene().surfaces[s].holes, before.surfaces[s].holes) << "surface " << s;
   }
   expectSameMeshes(editor.meshed(), meshedBefore);
+  // The floor's adaptive mesh, its footprint's hole id, and the adaptive meshes made: as they were.
+  EXPECT_EQ(editor.adaptiveMeshes().find(floorIndex), adaptive);
+  EXPECT_EQ(adaptive->elements(), adaptiveBefore);
+  EXPECT_EQ(editor.adaptiveMeshes().footprints(floorIndex), footprintsBefore);
+  EXPECT_EQ(editor.adaptiveMeshes().size(), adaptiveMeshesBefore);
 
   // Moving on from the last good pose works as from any other, and coming home restores the
   // loaded meshes.
@@ -180,6 +197,132 @@ TEST(SceneEditor, AMoveWhoseFootprintLeavesASliverTooFineIsRefusedWhole) {
   const MeshedScene homeMeshed = meshScene(home);
   EXPECT_TRUE(editor.setPose(box, poseOf(home.objects[box])));
   expectSameMeshes(editor.meshed(), homeMeshed);
+}
+
+// A surface's elements by key, each as its corners' world positions.
+std::map<uint64_t, std::vector<Vec3>> elementsByKey(const SurfaceMesh& mesh) {
+  std::map<uint64_t, std::vector<Vec3>> out;
+  for (size_t e = 0; e < mesh.keys.size(); ++e) {
+    std::vector<Vec3>& corners = out[mesh.keys[e]];
+    for (uint32_t v : mesh.mesh.elements[e])
+      if (v != mesher::Mesh::kNone) corners.push_back(mesh.positions[v]);
+  }
+  return out;
+}
+
+// Distance along the floor (x, z) from p to the nearest of the rings' bounding boxes.
+double distanceToFootprints(const Vec3& p, const std::vector<Ring3>& rings) {
+  double nearest = 1e300;
+  for (const Ring3& ring : rings) {
+    Vec3 lo = ring.front(), hi = lo;
+    for (const Vec3& q : ring) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    nearest = std::min(nearest, std::hypot(std::max({lo.x - p.x, 0.0, p.x - hi.x}), std::max({lo.z - p.z, 0.0, p.z - hi.z})));
+  }
+  return nearest;
+}
+
+Vec3 mean(const std::vector<Vec3>& points) {
+  Vec3 sum{0};
+  for (const Vec3& p : points) sum += p;
+  return sum / static_cast<double>(points.size());
+}
+
+uint32_t floorIndex(const Scene& scene) {
+  const Surface& floor = test::surfaceOf(scene, "room", "bottom");
+  return static_cast<uint32_t>(&floor - scene.surfaces.data());
+}
+
+// Moves `name` of `asset` by `step`: the floor's footprints move by hole removal and insertion
+// in its adaptive mesh. Every element of the floor within `near` of neither the old nor the new
+// footprints goes on under its key, corners unmoved; the elements removed and added lie within
+// it; the mesh stays conforming with exact boundaries. (The floor was meshed anew: every key
+// new.) Returns the share of the floor's elements that went on.
+double expectFootprintsMovedLocally(const std::string& asset, const std::string& name, const Vec3& step, double near) {
+  Scene loaded = loadScene(std::string(WALKRAD_ASSETS) + "/" + asset);
+  MeshedScene meshed = meshScene(loaded);
+  SceneEditor editor(std::move(loaded), std::move(meshed));
+  const uint32_t floor = floorIndex(editor.scene());
+  const uint32_t object = *editor.findObject(name);
+  const Surface before = editor.scene().surfaces[floor];
+  const auto elementsBefore = elementsByKey(editor.meshed().surfaces[floor]);
+  ObjectPose pose = poseOf(editor.scene().objects[object]);
+  pose.position += step;
+  EXPECT_TRUE(editor.setPose(object, pose));
+  const Surface& after = editor.scene().surfaces[floor];
+  EXPECT_NE(after.holes, before.holes);
+  const std::vector<EditedSurface> edited = editor.takeEdited();
+  const auto floorEdit = std::find_if(edited.begin(), edited.end(), [&](const EditedSurface& e) { return e.surface == floor; });
+  EXPECT_NE(floorEdit, edited.end());
+  if (floorEdit == edited.end()) return 0;
+  EXPECT_FALSE(floorEdit->meshedAnew);
+  EXPECT_TRUE(floorEdit->holesChanged);
+
+  std::vector<Ring3> footprints(before.holes.end() - static_cast<ptrdiff_t>(before.contactHoles), before.holes.end());
+  footprints.insert(footprints.end(), after.holes.end() - static_cast<ptrdiff_t>(after.contactHoles), after.holes.end());
+  const SurfaceMesh& mesh = editor.meshed().surfaces[floor];
+  const auto elementsAfter = elementsByKey(mesh);
+  size_t kept = 0, removed = 0, added = 0;
+  for (const auto& [key, corners] : elementsBefore) {
+    const auto found = elementsAfter.find(key);
+    if (found != elementsAfter.end()) {
+      ++kept;
+      EXPECT_EQ(found->second, corners);
+    } else {
+      ++removed;
+      EXPECT_LT(distanceToFootprints(mean(corners), footprints), near);
+    }
+  }
+  for (const auto& [key, corners] : elementsAfter)
+    if (!elementsBefore.count(key)) {
+      ++added;
+      EXPECT_LT(distanceToFootprints(mean(corners), footprints), near);
+    }
+  const auto holeEdit = std::find_if(editor.holeEdits().begin(), editor.holeEdits().end(),
+                                     [&](const SceneEditor::HoleEdit& h) { return h.surface == floor; });
+  EXPECT_NE(holeEdit, editor.holeEdits().end());
+  if (holeEdit != editor.holeEdits().end()) {
+    EXPECT_EQ(holeEdit->removed, removed);
+    EXPECT_EQ(holeEdit->added, added);
+  }
+  std::printf("%s, %s moved: of the floor's %zu elements %zu went on, %zu removed, %zu added\n", asset.c_str(),
+              name.c_str(), elementsBefore.size(), kept, removed, added);
+  mesher::test::expectValidMesh(mesher::checkMesh(mesh.polygon, mesh.mesh), false);
+  for (const Vec3& p : mesh.positions) EXPECT_EQ(p.y, before.outer.front().y);
+  return static_cast<double>(kept) / static_cast<double>(elementsBefore.size());
+}
+
+TEST(SceneEditor, AMovedBoxKeepsTheFloorsElementsAwayFromItsFootprint) {
+  // Patches of 0.5 m: the grading around a footprint reaches about two patch sizes, which on this
+  // 4 x 3 m floor under a 0.9 m box is a third of it.
+  EXPECT_GT(expectFootprintsMovedLocally("box-on-floor.json", "box", Vec3{0.3, 0, 0}, 1.0), 0.7);
+}
+
+TEST(SceneEditor, AMovedKitchenChairKeepsTheFloorsElementsAwayFromItsLegs) {
+  // Patches of 12 inches; four legs' footprints go and come.
+  EXPECT_GT(expectFootprintsMovedLocally("kitchen.json", "chair 1", Vec3{6, 0, -4}, 24), 0.8);
+}
+
+// Moving the box back where it was loaded meshes the floor as it was loaded, element for element
+// and point for point (hole insertion leaves a mesh a little different from the mesher's around
+// a footprint), and the elements it kept all the while go on under their loaded keys.
+TEST(SceneEditor, MovingThereAndBackRestoresTheFloorsLoadedMesh) {
+  Scene loaded = loadScene(std::string(WALKRAD_ASSETS) + "/box-on-floor.json");
+  const MeshedScene meshedLoaded = meshScene(loaded);
+  SceneEditor editor(loaded, meshedLoaded);
+  const uint32_t floor = floorIndex(loaded), box = *editor.findObject("box");
+  const ObjectPose home = poseOf(loaded.objects[box]);
+  for (const Vec3 step : {Vec3{0.3, 0, 0}, Vec3{0.3, 0, 0.2}, Vec3{-0.2, 0, 0.4}}) {
+    editor.setPose(box, {home.position + step, home.rotateYDeg});
+    ASSERT_EQ(editor.holeEdits().size(), 1u);
+  }
+  editor.takeEdited();
+  editor.setPose(box, home);
+  const SurfaceMesh& mesh = editor.meshed().surfaces[floor];
+  EXPECT_EQ(mesh.mesh.elements, meshedLoaded.surfaces[floor].mesh.elements);
+  EXPECT_EQ(mesh.positions, meshedLoaded.surfaces[floor].positions);
+  EXPECT_EQ(mesh.keys, meshedLoaded.surfaces[floor].keys);
+  for (const EditedSurface& e : editor.takeEdited())
+    EXPECT_EQ(e, (EditedSurface{e.surface, false, e.surface == floor})) << editor.scene().surfaces[e.surface].face;
 }
 
 TEST(EditHistory, UndoRedoAndTheSavedState) {

@@ -94,7 +94,11 @@ FloorPatch floorIn(const Session& session, double x0, double x1, double z0, doub
   FloorPatch patch;
   const DisplayMesh& mesh = session.display();
   const SurfaceDisplay& floor = mesh.surfaces[floorOf(session.scene())];
+  // Only vertices drawn: a cut-out's hole insertion may leave vertices no element uses.
+  std::vector<uint8_t> drawn(floor.positions.size(), 0);
+  for (uint32_t v : floor.triangles) drawn[v] = 1;
   for (size_t v = 0; v < floor.positions.size(); ++v) {
+    if (!drawn[v]) continue;
     const glm::dvec3 p = glm::dvec3(floor.positions[v]) + mesh.origin;
     if (p.x <= x0 || p.x >= x1 || p.z <= z0 || p.z >= z1) continue;
     ++patch.vertices;
