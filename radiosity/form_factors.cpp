@@ -222,12 +222,12 @@ Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal) {
   r.normal = normal;
   r.offset = glm::dot(r.normal, r.centre);
   r.area = polygonArea(p);
-  r.rule = gaussRule(p);
-  for (int k = 0; k < r.rule.n; ++k) {
-    r.lanes.x[k] = r.rule.point[k].x;
-    r.lanes.y[k] = r.rule.point[k].y;
-    r.lanes.z[k] = r.rule.point[k].z;
-    r.lanes.weight[k] = r.rule.weight[k];
+  const Quadrature rule = gaussRule(p);
+  for (int k = 0; k < rule.n; ++k) {
+    r.lanes.x[k] = rule.point[k].x;
+    r.lanes.y[k] = rule.point[k].y;
+    r.lanes.z[k] = rule.point[k].z;
+    r.lanes.weight[k] = rule.weight[k];
   }
   return r;
 }
@@ -243,10 +243,10 @@ double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const 
 double gaussSumReference(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
   // cos at the point x cos at the receiver / (pi d^2), each cosine a dot over d.
   double sum = 0;
-  for (int k = 0; k < r.rule.n; ++k) {
-    const glm::dvec3 d = r.rule.point[k] - point;
+  for (int k = 0; k < r.polygon.n; ++k) {
+    const glm::dvec3 d = glm::dvec3(r.lanes.x[k], r.lanes.y[k], r.lanes.z[k]) - point;
     const double d2 = glm::dot(d, d);
-    sum += r.rule.weight[k] * glm::dot(d, normal) * std::abs(glm::dot(d, r.normal)) / (d2 * d2);
+    sum += r.lanes.weight[k] * glm::dot(d, normal) * std::abs(glm::dot(d, r.normal)) / (d2 * d2);
   }
   return sum;
 }
@@ -274,7 +274,7 @@ namespace {
   alignas(32) double lane[4];
   _mm256_store_pd(lane, terms);
   double sum = 0;
-  for (int k = 0; k < r.rule.n; ++k) sum += lane[k];
+  for (int k = 0; k < r.polygon.n; ++k) sum += lane[k];
   return sum;
 }
 #endif
@@ -351,7 +351,12 @@ void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& norma
 
 void areaToPolygon(const Receiver& piece, double weight, const glm::dvec3& normal, const Receiver& r, double farRatio,
                    double ratio, int splits, double& front, double& back) {
-  integrate(piece.polygon, piece.centre, piece.radius, &piece.rule, weight, normal, r, farRatio, ratio, splits, front,
+  Quadrature rule;
+  for (rule.n = 0; rule.n < piece.polygon.n; ++rule.n) {
+    rule.point[rule.n] = {piece.lanes.x[rule.n], piece.lanes.y[rule.n], piece.lanes.z[rule.n]};
+    rule.weight[rule.n] = piece.lanes.weight[rule.n];
+  }
+  integrate(piece.polygon, piece.centre, piece.radius, &rule, weight, normal, r, farRatio, ratio, splits, front,
             back);
 }
 

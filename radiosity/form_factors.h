@@ -52,9 +52,8 @@ struct Receiver {
   glm::dvec3 normal{0};
   double offset = 0;
   double area = 0;
-  Quadrature rule;
-  // The rule's points and weights by coordinate, for the vector lanes (a triangle's fourth
-  // weight is 0).
+  // The Gauss rule (gaussRule: polygon.n points) by coordinate, for the vector lanes (a
+  // triangle's fourth weight is 0); held once, as the solver holds one per element.
   struct RuleLanes {
     alignas(32) double x[4], y[4], z[4], weight[4];
   } lanes{};

@@ -115,10 +115,16 @@ struct Solver::State {
   std::vector<Sent> sent;
   std::vector<double> radius, area, offset;
   std::vector<uint32_t> surfaceOf, patchOf;
-  // kTargets per element where the item buffer is read for its visibility: its centroid, then
-  // the points a quarter of the way in from its corners.
+  // Where the item buffer is read for element j's visibility: its centroid, then the points a
+  // quarter of the way in from its corners. Made when read (few elements are), not held.
   static constexpr size_t kTargets = 5;
-  std::vector<glm::dvec3> targets;
+  std::array<glm::dvec3, kTargets> targetsOf(uint32_t j) const {
+    const Polygon3& p = receiver[j].polygon;
+    std::array<glm::dvec3, kTargets> out;
+    out[0] = centre[j];
+    for (int k = 0; k < 4; ++k) out[1 + k] = p.v[k % p.n] + 0.25 * (centre[j] - p.v[k % p.n]);
+    return out;
+  }
 
   // Per patch; its elements are patchElements[patchFirst[p], patchLast[p]).
   std::vector<uint32_t> patchElements, patchFirst, patchLast, patchSurface;
@@ -139,7 +145,15 @@ struct Solver::State {
   struct Replay {
     glm::dvec3 total{0}, judged{0};
   };
-  std::vector<PatchTree> trees;      // over each patch's elements, in patchElements' order
+  // Per patch, its tree over its elements (near_field.h), in patchElements' order: only a patch
+  // that shoots (or is split, or corrected) reads it, and a tree is about twice the rest of its
+  // patch's elements' state, so it is held from the first time it is needed (treeOf). Empty: not
+  // made yet.
+  std::vector<PatchTree> trees;
+  // Patch p's tree, made now if it is not yet: from its elements in ascending order, the order
+  // they were given in when setUpPatch ordered them (treeFromAscending), which makes the same
+  // tree and the same order. Not on several threads at once.
+  const PatchTree& treeOf(uint32_t p);
 
   std::vector<glm::vec3> soupVertices;
   std::vector<pxpl5::Polygon> soupPolygons;
@@ -319,7 +333,14 @@ void checkSurface(const Surface& in, const std::string& where) {
 void Solver::State::build(std::span<const Surface* const> input, const State* kept) {
   size_t elementTotal = 0;
   for (size_t si = 0; si < input.size(); ++si) elementTotal += input[si] ? input[si]->elements.size() : kept->surfaces[si].elementCount;
+  // Every array to its size at once: grown by doubling, they held up to twice the elements'
+  // state, and more while they moved.
+  surfaces.reserve(input.size());
   receiver.reserve(elementTotal);
+  for (auto* v : {&centre, &normal, &radiance, &elementUnshot}) v->reserve(elementTotal);
+  sent.reserve(elementTotal);
+  for (auto* v : {&radius, &area, &offset}) v->reserve(elementTotal);
+  for (auto* v : {&surfaceOf, &patchOf, &patchElements}) v->reserve(elementTotal);
   soupVertices.reserve(elementTotal * 4);
   soupPolygons.reserve(elementTotal);
 
@@ -363,8 +384,6 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       const Polygon3& p = r.polygon;
       const uint32_t j = static_cast<uint32_t>(receiver.size() - 1);
       centre.push_back(r.centre);
-      targets.push_back(r.centre);
-      for (int k = 0; k < 4; ++k) targets.push_back(p.v[k % p.n] + 0.25 * (r.centre - p.v[k % p.n]));
       normal.push_back(s.normal);
       offset.push_back(r.offset);
       radius.push_back(r.radius);
@@ -384,6 +403,11 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
     s.patchCount = patches;
   }
 
+  for (auto* v : {&patchFirst, &patchLast, &patchSurface}) v->reserve(members.size());
+  for (auto* v : {&patchCentre, &unshot}) v->reserve(members.size());
+  for (auto* v : {&patchArea, &patchRadius, &pointBackShare}) v->reserve(members.size());
+  pointChosen.reserve(members.size());
+  trees.reserve(members.size());
   for (size_t p = 0; p < members.size(); ++p) {
     if (members[p].empty())
       throw std::invalid_argument("radiosity::Solver: patch " + std::to_string(p) + " has no elements");
@@ -437,8 +461,24 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   unshot[p] = light / a;
   pointChosen[p] = 0;
   pointBackShare[p] = std::numeric_limits<double>::quiet_NaN();
+  // The tree orders the patch's elements now (sums over them follow that order). Given in
+  // ascending order, as build() gives them, it can be made again alike when needed, so it is
+  // not held; a split's parts (in their parent's tree's order) keep theirs.
+  const bool ascending = std::is_sorted(own.begin(), own.end());
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
   trees[p] = buildPatchTree(own, receiver, axes.x, axes.y);
+  if (ascending) trees[p] = {};
+}
+
+const PatchTree& Solver::State::treeOf(uint32_t p) {
+  if (trees[p].nodes.empty()) {
+    std::vector<uint32_t> given(elementsOf(p).begin(), elementsOf(p).end());
+    std::sort(given.begin(), given.end());
+    const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
+    trees[p] = buildPatchTree(given, receiver, axes.x, axes.y);
+    DCHECK(std::equal(given.begin(), given.end(), elementsOf(p).begin()));
+  }
+  return trees[p];
 }
 
 // ---- receivers of one shot ---------------------------------------------------------------------
@@ -454,7 +494,8 @@ double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const Hemi
   }
   // A receiver smaller than a pixel would read the pixel of its centroid at the other points too.
   const size_t count = unoccluded < pixelShare ? 1 : 1 + static_cast<size_t>(receiver[j].polygon.n);
-  return itemBufferVisibility(frame, axes, eye, {targets.data() + kTargets * j, count}, j, {normal, offset, surfaceOf});
+  const std::array<glm::dvec3, kTargets> targets = targetsOf(j);
+  return itemBufferVisibility(frame, axes, eye, {targets.data(), count}, j, {normal, offset, surfaceOf});
 }
 
 double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const {
@@ -511,6 +552,7 @@ const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
 
 // The children of patch p's tree become patches: p the first, new patches the others.
 void Solver::State::split(uint32_t p) {
+  treeOf(p);
   const PatchTree tree = std::move(trees[p]);
   const uint32_t base = patchFirst[p];
   const PatchTree::Node& root = tree.nodes.front();
@@ -704,7 +746,7 @@ void Solver::State::lightPatch(uint32_t p, const glm::dvec3& dB, std::span<const
       if (dB[c] != 0) w[c] = area[own[k]] * light[k][c] / (patchArea[p] * dB[c]);
     shares.push_back(w);
   }
-  lightPatchTree(trees[p], shares, nodeLight);
+  lightPatchTree(treeOf(p), shares, nodeLight);
 }
 
 void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front,
@@ -736,7 +778,8 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(eyeNormal));
 
   // Near and small receivers get new factors, per channel (near ones weigh the shooter's
-  // elements by their unshot light), judged on the graphics processors.
+  // elements by their unshot light), judged on the graphics processors (which read p's tree).
+  treeOf(p);
   const auto elements = static_cast<uint32_t>(receiver.size());
   renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
     if (before)
@@ -1021,7 +1064,7 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
       bool within = true;  // the old patch's elements all in this one
       for (uint32_t j : old.elementsOf(old.patchOf[first]))
         within = within && edit->elementNow[j] != kNone && n.patchOf[edit->elementNow[j]] == q;
-      const PatchTree::Node& root = n.trees[q].nodes.front();
+      const PatchTree::Node& root = n.treeOf(q).nodes.front();
       if (!within || root.children < 2) break;
       n.split(q);
     }
@@ -1339,9 +1382,10 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
       // Only near and small receivers read items at their targets; the others' factors are
       // counts, unchanged when none of their pixels is.
       if (!whole(j)) continue;
+      const std::array<glm::dvec3, State::kTargets> targets = old.targetsOf(j);
       for (size_t k = 0; k < State::kTargets && w.marked[j] != mark; ++k) {
         int x = 0, y = 0;
-        if (!targetPixel(axes, eye, resolution, old.targets[State::kTargets * j + k], x, y)) continue;
+        if (!targetPixel(axes, eye, resolution, targets[k], x, y)) continue;
         if (x < changedWindow.x0 || x >= changedWindow.x1 || y < changedWindow.y0 || y >= changedWindow.y1) continue;
         if (w.differs[static_cast<size_t>(y - changedWindow.y0) * changedWidth + static_cast<size_t>(x - changedWindow.x0)])
           w.marked[j] = mark;
@@ -1476,6 +1520,7 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
   if (w) {
     for (const pxpl5::IdFactor& f : shot.factors) now.pixelFactor[f.id] = f.factor;
     const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaces[now.patchSurface[q]].normal));
+    now.treeOf(q);
     for (uint32_t i : w->judged[1]) {
       now.judgeReceivers(q, w->frame[1], axes, i, i + 1, judging);
       shot.judged.insert(shot.judged.end(), judging.judged.begin(), judging.judged.end());
