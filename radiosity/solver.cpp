@@ -88,7 +88,7 @@ struct Solver::State {
   struct SurfaceData {
     uint32_t firstElement = 0, elementCount = 0;
     uint32_t firstPatch = 0, patchCount = 0;
-    glm::dvec3 normal{0}, reflectance{0}, emission{0};
+    glm::dvec3 reflectance{0}, emission{0};
     std::vector<std::array<uint32_t, 4>> corners;
     size_t vertexCount = 0;
     // As given: the elements' shooting patches before any split, and their keys (Surface).
@@ -97,12 +97,17 @@ struct Solver::State {
     uint64_t keyOf(uint32_t element) const { return keys.empty() ? element : keys[element]; }
   };
   std::vector<SurfaceData> surfaces;
+  // Per surface, its unit normal: every element's (normalOf), so held once, and apart from the
+  // rest for the loops over every element.
+  std::vector<glm::dvec3> surfaceNormal;
 
   // Per element (global index = the pxpl5 polygon index and id). The receivers hold centres, radii
   // and areas too; the loops over every element read them from the arrays below, which are
   // denser.
   std::vector<Receiver> receiver;
-  std::vector<glm::dvec3> centre, normal, radiance;
+  std::vector<glm::dvec3> centre, radiance;
+  const glm::dvec3& normalOf(uint32_t j) const { return surfaceNormal[surfaceOf[j]]; }
+  ElementPlanes planes() const { return {surfaceNormal, offset, surfaceOf}; }
   std::vector<glm::dvec3> elementUnshot;  // per element; its patch's unshot is their area-weighted mean
   // Per element, what it has shot along this geometry, so that a take-back after an edit
   // (Solver::edit) sends back exactly what the shots sent, however unevenly the patch's elements
@@ -147,11 +152,11 @@ struct Solver::State {
   };
   // Per patch, its tree over its elements (near_field.h), in patchElements' order: only a patch
   // that shoots (or is split, or corrected) reads it, and a tree is about twice the rest of its
-  // patch's elements' state, so it is held from the first time it is needed (treeOf). Empty: not
+  // patch's elements' state, so it is held from the first time it is needed (treeOf). Null: not
   // made yet.
-  std::vector<PatchTree> trees;
+  std::vector<std::unique_ptr<PatchTree>> trees;
   // Patch p's tree, made now if it is not yet: from its elements in ascending order, the order
-  // they were given in when setUpPatch ordered them (treeFromAscending), which makes the same
+  // setUpPatch had them in when it ordered them by the tree it dropped, which makes the same
   // tree and the same order. Not on several threads at once.
   const PatchTree& treeOf(uint32_t p);
 
@@ -222,7 +227,7 @@ struct Solver::State {
               std::span(plans.sizes).subspan(from.plans, to.plans - from.plans)};
     }
   };
-  std::vector<KeptShot> keptShots;
+  std::vector<std::unique_ptr<KeptShot>> keptShots;  // per patch; null: none kept
   size_t keptBytes = 0;
 
   double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
@@ -248,7 +253,7 @@ struct Solver::State {
   void integrateJudged(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans, ReceiverChunk& out);
   // Patch p's kept shot, or null.
   const KeptShot* keptShot(uint32_t p) const {
-    return p < keptShots.size() && pointChosen[p] && !keptShots[p].chunkStart.empty() ? &keptShots[p] : nullptr;
+    return p < keptShots.size() && pointChosen[p] ? keptShots[p].get() : nullptr;
   }
   // The record for keeping patch p's first shot, sized, when it is to be kept (its point is
   // chosen, it has none yet, the budget allows); keepShot fills and stores it.
@@ -336,8 +341,9 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
   // Every array to its size at once: grown by doubling, they held up to twice the elements'
   // state, and more while they moved.
   surfaces.reserve(input.size());
+  surfaceNormal.reserve(input.size());
   receiver.reserve(elementTotal);
-  for (auto* v : {&centre, &normal, &radiance, &elementUnshot}) v->reserve(elementTotal);
+  for (auto* v : {&centre, &radiance, &elementUnshot}) v->reserve(elementTotal);
   sent.reserve(elementTotal);
   for (auto* v : {&radius, &area, &offset}) v->reserve(elementTotal);
   for (auto* v : {&surfaceOf, &patchOf, &patchElements}) v->reserve(elementTotal);
@@ -351,7 +357,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
     SurfaceData& s = surfaces.emplace_back();
     if (in) {
       checkSurface(*in, where);
-      s.normal = glm::normalize(in->normal);
+      surfaceNormal.push_back(glm::normalize(in->normal));
       s.reflectance = glm::clamp(in->reflectance, 0.0, 1.0);
       s.emission = in->emission;
       s.corners = in->elements;
@@ -360,6 +366,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       s.keys = in->keys;
     } else {
       s = kept->surfaces[si];
+      surfaceNormal.push_back(kept->surfaceNormal[si]);
     }
     s.firstElement = static_cast<uint32_t>(receiver.size());
     s.elementCount = static_cast<uint32_t>(s.corners.size());
@@ -375,7 +382,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
             throw std::invalid_argument(where + ", element " + std::to_string(e) + ": corner index out of range");
           p.v[k] = in->vertices[c[k]];
         }
-        receiver.push_back(makeReceiver(p, s.normal));
+        receiver.push_back(makeReceiver(p, surfaceNormal[si]));
         if (!(receiver.back().area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
       } else {
         receiver.push_back(kept->receiver[kept->surfaces[si].firstElement + e]);  // a surface no edit named
@@ -384,7 +391,6 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       const Polygon3& p = r.polygon;
       const uint32_t j = static_cast<uint32_t>(receiver.size() - 1);
       centre.push_back(r.centre);
-      normal.push_back(s.normal);
       offset.push_back(r.offset);
       radius.push_back(r.radius);
       area.push_back(r.area);
@@ -432,7 +438,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
     pointBackShare.emplace_back();
     trees.emplace_back();
   }
-  if (p < keptShots.size()) keptBytes -= keptShots[p].bytes(), keptShots[p] = {};
+  if (p < keptShots.size() && keptShots[p]) keptBytes -= keptShots[p]->bytes(), keptShots[p].reset();
   patchFirst[p] = first;
   patchLast[p] = last;
   const std::span<uint32_t> own = elementsOf(p);
@@ -443,7 +449,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   // A patch bent around a hole may have its centroid outside itself: shoot from its element
   // nearest the centroid instead.
   bool inside = false;
-  for (uint32_t e : own) inside = inside || insideConvex(receiver[e].polygon, normal[e], c);
+  for (uint32_t e : own) inside = inside || insideConvex(receiver[e].polygon, normalOf(e), c);
   if (!inside) {
     uint32_t nearest = own.front();
     for (uint32_t e : own)
@@ -465,20 +471,20 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   // ascending order, as build() gives them, it can be made again alike when needed, so it is
   // not held; a split's parts (in their parent's tree's order) keep theirs.
   const bool ascending = std::is_sorted(own.begin(), own.end());
-  const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
-  trees[p] = buildPatchTree(own, receiver, axes.x, axes.y);
-  if (ascending) trees[p] = {};
+  const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
+  PatchTree tree = buildPatchTree(own, receiver, axes.x, axes.y);
+  trees[p] = ascending ? nullptr : std::make_unique<PatchTree>(std::move(tree));
 }
 
 const PatchTree& Solver::State::treeOf(uint32_t p) {
-  if (trees[p].nodes.empty()) {
+  if (!trees[p]) {
     std::vector<uint32_t> given(elementsOf(p).begin(), elementsOf(p).end());
     std::sort(given.begin(), given.end());
-    const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
-    trees[p] = buildPatchTree(given, receiver, axes.x, axes.y);
+    const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
+    trees[p] = std::make_unique<PatchTree>(buildPatchTree(given, receiver, axes.x, axes.y));
     DCHECK(std::equal(given.begin(), given.end(), elementsOf(p).begin()));
   }
-  return trees[p];
+  return *trees[p];
 }
 
 // ---- receivers of one shot ---------------------------------------------------------------------
@@ -495,13 +501,13 @@ double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const Hemi
   // A receiver smaller than a pixel would read the pixel of its centroid at the other points too.
   const size_t count = unoccluded < pixelShare ? 1 : 1 + static_cast<size_t>(receiver[j].polygon.n);
   const std::array<glm::dvec3, kTargets> targets = targetsOf(j);
-  return itemBufferVisibility(frame, axes, eye, {targets.data(), count}, j, {normal, offset, surfaceOf});
+  return itemBufferVisibility(frame, axes, eye, {targets.data(), count}, j, planes());
 }
 
 double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const {
   double back = 0;
   for (const pxpl5::IdFactor& f : frame.factors)
-    if (glm::dot(normal[f.id], eye) <= offset[f.id]) back += f.factor;
+    if (glm::dot(normalOf(f.id), eye) <= offset[f.id]) back += f.factor;
   return back;
 }
 
@@ -553,12 +559,12 @@ const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
 // The children of patch p's tree become patches: p the first, new patches the others.
 void Solver::State::split(uint32_t p) {
   treeOf(p);
-  const PatchTree tree = std::move(trees[p]);
+  const std::unique_ptr<PatchTree> tree = std::move(trees[p]);
   const uint32_t base = patchFirst[p];
-  const PatchTree::Node& root = tree.nodes.front();
+  const PatchTree::Node& root = tree->nodes.front();
   for (uint32_t c = root.child; c < root.child + root.children; ++c) {
     const uint32_t q = c == root.child ? p : static_cast<uint32_t>(unshot.size());
-    setUpPatch(q, base + tree.nodes[c].first, base + tree.nodes[c].last);
+    setUpPatch(q, base + tree->nodes[c].first, base + tree->nodes[c].last);
   }
   ++stats.splitPatches;
 }
@@ -566,7 +572,7 @@ void Solver::State::split(uint32_t p) {
 // Patch p's hemisphere frame from `point`: every element but the patch's own.
 const pxpl5::HemisphereFrame& Solver::State::frameFrom(uint32_t p, const glm::dvec3& point) {
   ++stats.frames;
-  return renderer.render({glm::vec3(point), glm::vec3(surfaces[patchSurface[p]].normal), elementsOf(p)},
+  return renderer.render({glm::vec3(point), glm::vec3(surfaceNormal[patchSurface[p]]), elementsOf(p)},
                          {soupVertices, soupPolygons});
 }
 
@@ -580,7 +586,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
   double replacedPixels = 0;
   uint64_t nearCount = 0, smallCount = 0;
   const uint32_t si = patchSurface[p];
-  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
+  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaceNormal[si];
   const double nearLimit = settings.nearFieldRatio * patchRadius[p];
   const double smallLimit = settings.smallReceiverPixels * pixelShare;
   for (uint32_t j = begin; j < end; ++j) {
@@ -595,16 +601,16 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       // own solid cannot be when it is convex). Without this a floor patch reaching around a box
       // left the box's face 15% too dark.
       const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
-      const bool behind = glm::dot(normal[j], eye) <= offset[j];
+      const bool behind = glm::dot(normalOf(j), eye) <= offset[j];
       const Judged& k = out.judged.emplace_back(Judged{j, behind ? Judged::kNearBehind : Judged::kNear, v});
       if (k.integrated())
-        planPatchToReceiver(trees[p], elementsOf(p), receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
+        planPatchToReceiver(*trees[p], elementsOf(p), receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
                             settings.pieceRatio, settings.maxShooterSplits, out.plans);
       ++nearCount;
     } else {
       // A far receiver whose back faces the centre gets nothing but lost light whatever its
       // factor: its pixel count, right in sum over many such receivers, stands.
-      if (glm::dot(normal[j], eye) <= offset[j]) continue;
+      if (glm::dot(normalOf(j), eye) <= offset[j]) continue;
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
       const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
@@ -638,7 +644,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
                                     ReceiverChunk& out) {
   out.factors.clear();
   glm::dvec3 replacedNew{0};
-  const glm::dvec3& eyeNormal = surfaces[patchSurface[p]].normal;
+  const glm::dvec3& eyeNormal = surfaceNormal[patchSurface[p]];
   size_t plan = 0, step = 0, factor = 0;
   for (const Judged& k : judged) {
     const uint32_t j = k.element;
@@ -647,7 +653,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
       f.front = glm::dvec3(k.value);
     } else if (k.integrated()) {
       const NearPlanSize size = plans.sizes[plan++];
-      applyPlan(trees[p], nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
+      applyPlan(*trees[p], nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
                 receiver[j], f.front, f.back);
       step += size.steps;
       factor += size.factors;
@@ -662,7 +668,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
 }
 
 std::optional<Solver::State::KeptShot> Solver::State::shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const {
-  if (!pointChosen[p] || (p < keptShots.size() && !keptShots[p].chunkStart.empty())) return {};
+  if (!pointChosen[p] || (p < keptShots.size() && keptShots[p])) return {};
   KeptShot record;
   record.chunkStart.push_back({});
   for (const ReceiverChunk& chunk : chunks) {
@@ -696,8 +702,8 @@ void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, Ke
 
 void Solver::State::storeShot(uint32_t p, KeptShot record) {
   if (keptShots.size() <= p) keptShots.resize(unshot.size());
-  keptBytes += record.bytes() - keptShots[p].bytes();
-  keptShots[p] = std::move(record);
+  keptBytes += record.bytes() - (keptShots[p] ? keptShots[p]->bytes() : 0);
+  keptShots[p] = std::make_unique<KeptShot>(std::move(record));
 }
 
 void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
@@ -714,7 +720,7 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   glm::dvec3 over{0};
   if (settings.overshoot) {
     const glm::dvec3 expected = surfaces[patchSurface[p]].reflectance *
-                                gatherUnshot(seen, patchCentre[p], {normal, offset, surfaceOf}, elementUnshot);
+                                gatherUnshot(seen, patchCentre[p], planes(), elementUnshot);
     for (int c = 0; c < 3; ++c) over[c] = std::clamp(expected[c], 0.0, std::max(unshot[p][c], 0.0));
   }
   const glm::dvec3 dB = unshot[p] + over;
@@ -765,7 +771,7 @@ template <typename Deposit>
 glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit,
                                      const Replay* replay) {
   const uint32_t si = patchSurface[p];
-  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
+  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaceNormal[si];
 
   // A kept shot of p stands for its frame and judgement (the same geometry, the same point).
   const KeptShot* before = chosen ? nullptr : keptShot(p);
@@ -837,7 +843,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
       pixelFactor[f.id] = 0;
       if (replaced[f.id]) continue;
       const glm::dvec3 factor = f.factor * scale;
-      if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
+      if (glm::dot(normalOf(f.id), eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
       else deposit(f.id, glm::dvec3(0), factor);
     }
     for (const ReceiverChunk& chunk : chunks)
@@ -1126,7 +1132,7 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
     bool itself = same == kNone;
     for (uint32_t j : old.elementsOf(p)) itself = itself || changedBefore[j];
     const uint32_t si = old.patchSurface[p];
-    const glm::dvec3 up = old.surfaces[si].normal, eye = old.patchCentre[p];
+    const glm::dvec3 up = old.surfaceNormal[si], eye = old.patchCentre[p];
     const double size = old.patchRadius[p];
     const double share =
         itself ? 1.0
@@ -1284,7 +1290,7 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   const uint32_t q = w.now = unmovedPatch(old, now, p);
   if (q == kNone || !old.pointChosen[p]) return;
   const uint32_t si = old.patchSurface[p];
-  const glm::dvec3 eye = old.patchCentre[p], up = old.surfaces[si].normal;
+  const glm::dvec3 eye = old.patchCentre[p], up = old.surfaceNormal[si];
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(up));
   const int resolution = old.settings.resolution;
 
@@ -1299,7 +1305,7 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   const double smallLimit = old.settings.smallReceiverPixels * old.pixelShare;
   const auto whole = [&](uint32_t j) {
     const double gap = glm::length(old.centre[j] - eye) - old.radius[j];
-    return gap < nearLimit || (glm::dot(old.normal[j], eye) > old.offset[j] && old.area[j] < smallLimit * kPi * gap * gap);
+    return gap < nearLimit || (glm::dot(old.normalOf(j), eye) > old.offset[j] && old.area[j] < smallLimit * kPi * gap * gap);
   };
   cull.cull(old.spheres(), axes, eye, resolution, si, changedWindow);
   // First both frames in the changed window alone, to find what differs there. The elements
@@ -1340,7 +1346,8 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
     const double u = (x + 0.5) * 2 / resolution - 1, v = (y + 0.5) * 2 / resolution - 1;
     const glm::dvec3 direction = axes.x * u + axes.y * v + axes.z * std::sqrt(std::max(0.0, 1 - u * u - v * v));
     const auto distance = [&](uint32_t j) {
-      return std::abs((s.offset[j] - glm::dot(s.normal[j], eye)) / glm::dot(s.normal[j], direction));
+      const glm::dvec3& normal = s.normalOf(j);
+      return std::abs((s.offset[j] - glm::dot(normal, eye)) / glm::dot(normal, direction));
     };
     return distance(over) < distance(behind) ? over : behind;
   };
@@ -1454,9 +1461,9 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
 }
 
 void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, const Window* w) {
-  State::KeptShot shot = std::move(old.keptShots[p]);
+  State::KeptShot shot = std::move(*old.keptShots[p]);
   old.keptBytes -= shot.bytes();
-  old.keptShots[p] = {};
+  old.keptShots[p].reset();
 
   // Pixel factors of the elements now. The window's frames are drawn their own way
   // (windowed_correction.h), which may give an element a pixel more or less than a whole frame
@@ -1519,7 +1526,7 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
   shot.plans.factors.resize(to.factors);
   if (w) {
     for (const pxpl5::IdFactor& f : shot.factors) now.pixelFactor[f.id] = f.factor;
-    const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaces[now.patchSurface[q]].normal));
+    const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaceNormal[now.patchSurface[q]]));
     now.treeOf(q);
     for (uint32_t i : w->judged[1]) {
       now.judgeReceivers(q, w->frame[1], axes, i, i + 1, judging);
