@@ -222,14 +222,20 @@ Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal) {
   r.normal = normal;
   r.offset = glm::dot(r.normal, r.centre);
   r.area = polygonArea(p);
-  const Quadrature rule = gaussRule(p);
-  for (int k = 0; k < rule.n; ++k) {
-    r.lanes.x[k] = rule.point[k].x;
-    r.lanes.y[k] = rule.point[k].y;
-    r.lanes.z[k] = rule.point[k].z;
-    r.lanes.weight[k] = rule.weight[k];
-  }
+  r.lanes = gaussLanes(p);
   return r;
+}
+
+Receiver::RuleLanes gaussLanes(const Polygon3& p) {
+  const Quadrature rule = gaussRule(p);
+  Receiver::RuleLanes lanes{};
+  for (int k = 0; k < rule.n; ++k) {
+    lanes.x[k] = rule.point[k].x;
+    lanes.y[k] = rule.point[k].y;
+    lanes.z[k] = rule.point[k].z;
+    lanes.weight[k] = rule.weight[k];
+  }
+  return lanes;
 }
 
 double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {

@@ -53,12 +53,14 @@ struct Receiver {
   double offset = 0;
   double area = 0;
   // The Gauss rule (gaussRule: polygon.n points) by coordinate, for the vector lanes (a
-  // triangle's fourth weight is 0); held once, as the solver holds one per element.
+  // triangle's fourth weight is 0).
   struct RuleLanes {
     alignas(32) double x[4], y[4], z[4], weight[4];
   } lanes{};
 };
 Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal);
+// gaussRule(p) as Receiver::lanes: what makeReceiver gives, for a caller that holds the rest.
+Receiver::RuleLanes gaussLanes(const Polygon3& p);
 
 // A point at least this many receiver radii from the receiver's centre, with the receiver wholly
 // above its horizon, takes the factor from the receiver's Gauss rule: Lambert's differential

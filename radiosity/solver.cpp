@@ -101,10 +101,10 @@ struct Solver::State {
   // rest for the loops over every element.
   std::vector<glm::dvec3> surfaceNormal;
 
-  // Per element (global index = the pxpl5 polygon index and id). The receivers hold centres, radii
-  // and areas too; the loops over every element read them from the arrays below, which are
-  // denser.
-  std::vector<Receiver> receiver;
+  // Per element (global index = the pxpl5 polygon index and id). Its Receiver (form_factors.h)
+  // is made when it is judged (receiverOf): held, with its Gauss rule, it was 320 bytes an
+  // element, half of the solver's memory, for the few that each shot judges.
+  std::vector<Polygon3> polygon;
   std::vector<glm::dvec3> centre, radiance;
   const glm::dvec3& normalOf(uint32_t j) const { return surfaceNormal[surfaceOf[j]]; }
   ElementPlanes planes() const { return {surfaceNormal, offset, surfaceOf}; }
@@ -124,11 +124,23 @@ struct Solver::State {
   // quarter of the way in from its corners. Made when read (few elements are), not held.
   static constexpr size_t kTargets = 5;
   std::array<glm::dvec3, kTargets> targetsOf(uint32_t j) const {
-    const Polygon3& p = receiver[j].polygon;
+    const Polygon3& p = polygon[j];
     std::array<glm::dvec3, kTargets> out;
     out[0] = centre[j];
     for (int k = 0; k < 4; ++k) out[1 + k] = p.v[k % p.n] + 0.25 * (centre[j] - p.v[k % p.n]);
     return out;
+  }
+  // Element j as makeReceiver made it when the solver took it.
+  Receiver receiverOf(uint32_t j) const {
+    Receiver r;
+    r.polygon = polygon[j];
+    r.centre = centre[j];
+    r.radius = radius[j];
+    r.normal = normalOf(j);
+    r.offset = offset[j];
+    r.area = area[j];
+    r.lanes = gaussLanes(polygon[j]);
+    return r;
   }
 
   // Per patch; its elements are patchElements[patchFirst[p], patchLast[p]).
@@ -159,6 +171,17 @@ struct Solver::State {
   // setUpPatch had them in when it ordered them by the tree it dropped, which makes the same
   // tree and the same order. Not on several threads at once.
   const PatchTree& treeOf(uint32_t p);
+  ElementShapes shapes() const { return {polygon, centre, area}; }
+  // Scratch: the elements of the patch whose receivers are judged, as receivers in its tree's
+  // order (planPatchToReceiver's pieces).
+  std::vector<Receiver> pieces;
+  // Makes patch p's tree and pieces, which the graphics processors read as they judge its
+  // receivers.
+  void readyToJudge(uint32_t p) {
+    treeOf(p);
+    pieces.clear();
+    for (uint32_t e : elementsOf(p)) pieces.push_back(receiverOf(e));
+  }
 
   std::vector<glm::vec3> soupVertices;
   std::vector<pxpl5::Polygon> soupPolygons;
@@ -342,7 +365,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
   // state, and more while they moved.
   surfaces.reserve(input.size());
   surfaceNormal.reserve(input.size());
-  receiver.reserve(elementTotal);
+  polygon.reserve(elementTotal);
   for (auto* v : {&centre, &radiance, &elementUnshot}) v->reserve(elementTotal);
   sent.reserve(elementTotal);
   for (auto* v : {&radius, &area, &offset}) v->reserve(elementTotal);
@@ -368,11 +391,12 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       s = kept->surfaces[si];
       surfaceNormal.push_back(kept->surfaceNormal[si]);
     }
-    s.firstElement = static_cast<uint32_t>(receiver.size());
+    s.firstElement = static_cast<uint32_t>(polygon.size());
     s.elementCount = static_cast<uint32_t>(s.corners.size());
     s.firstPatch = static_cast<uint32_t>(members.size());
     uint32_t patches = 0;
     for (uint32_t e = 0; e < s.elementCount; ++e) {
+      Receiver r;
       if (in) {
         const std::array<uint32_t, 4>& c = in->elements[e];
         Polygon3 p;
@@ -382,14 +406,14 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
             throw std::invalid_argument(where + ", element " + std::to_string(e) + ": corner index out of range");
           p.v[k] = in->vertices[c[k]];
         }
-        receiver.push_back(makeReceiver(p, surfaceNormal[si]));
-        if (!(receiver.back().area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
+        r = makeReceiver(p, surfaceNormal[si]);
+        if (!(r.area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
       } else {
-        receiver.push_back(kept->receiver[kept->surfaces[si].firstElement + e]);  // a surface no edit named
+        r = kept->receiverOf(kept->surfaces[si].firstElement + e);  // a surface no edit named
       }
-      const Receiver& r = receiver.back();
       const Polygon3& p = r.polygon;
-      const uint32_t j = static_cast<uint32_t>(receiver.size() - 1);
+      const auto j = static_cast<uint32_t>(polygon.size());
+      polygon.push_back(p);
       centre.push_back(r.centre);
       offset.push_back(r.offset);
       radius.push_back(r.radius);
@@ -422,8 +446,8 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
     setUpPatch(static_cast<uint32_t>(p), first, static_cast<uint32_t>(patchElements.size()));
     stats.emittedPower += kPi * surfaces[patchSurface[p]].emission * patchArea[p];
   }
-  pixelFactor.assign(receiver.size(), 0.0);
-  replaced.assign(receiver.size(), 0);
+  pixelFactor.assign(polygon.size(), 0.0);
+  replaced.assign(polygon.size(), 0);
 }
 
 // Makes patch p (a new one when p is the patch count) of patchElements[first, last): its area,
@@ -449,7 +473,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   // A patch bent around a hole may have its centroid outside itself: shoot from its element
   // nearest the centroid instead.
   bool inside = false;
-  for (uint32_t e : own) inside = inside || insideConvex(receiver[e].polygon, normalOf(e), c);
+  for (uint32_t e : own) inside = inside || insideConvex(polygon[e], normalOf(e), c);
   if (!inside) {
     uint32_t nearest = own.front();
     for (uint32_t e : own)
@@ -458,7 +482,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   }
   double r = 0;
   for (uint32_t e : own)
-    for (int k = 0; k < receiver[e].polygon.n; ++k) r = std::max(r, glm::length(receiver[e].polygon.v[k] - c));
+    for (int k = 0; k < polygon[e].n; ++k) r = std::max(r, glm::length(polygon[e].v[k] - c));
   for (uint32_t e : own) patchOf[e] = p;
   patchSurface[p] = surfaceOf[own.front()];
   patchArea[p] = a;
@@ -472,7 +496,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   // not held; a split's parts (in their parent's tree's order) keep theirs.
   const bool ascending = std::is_sorted(own.begin(), own.end());
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
-  PatchTree tree = buildPatchTree(own, receiver, axes.x, axes.y);
+  PatchTree tree = buildPatchTree(own, shapes(), axes.x, axes.y);
   trees[p] = ascending ? nullptr : std::make_unique<PatchTree>(std::move(tree));
 }
 
@@ -481,7 +505,7 @@ const PatchTree& Solver::State::treeOf(uint32_t p) {
     std::vector<uint32_t> given(elementsOf(p).begin(), elementsOf(p).end());
     std::sort(given.begin(), given.end());
     const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
-    trees[p] = std::make_unique<PatchTree>(buildPatchTree(given, receiver, axes.x, axes.y));
+    trees[p] = std::make_unique<PatchTree>(buildPatchTree(given, shapes(), axes.x, axes.y));
     DCHECK(std::equal(given.begin(), given.end(), elementsOf(p).begin()));
   }
   return *trees[p];
@@ -499,7 +523,7 @@ double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const Hemi
     return ratio >= kUnoccludedRatio ? 1.0 : ratio;
   }
   // A receiver smaller than a pixel would read the pixel of its centroid at the other points too.
-  const size_t count = unoccluded < pixelShare ? 1 : 1 + static_cast<size_t>(receiver[j].polygon.n);
+  const size_t count = unoccluded < pixelShare ? 1 : 1 + static_cast<size_t>(polygon[j].n);
   const std::array<glm::dvec3, kTargets> targets = targetsOf(j);
   return itemBufferVisibility(frame, axes, eye, {targets.data(), count}, j, planes());
 }
@@ -535,7 +559,7 @@ const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
   }
   pointChosen[p] = 1;
   const uint32_t e = elementsOf(p).front();
-  const Polygon3& corners = receiver[e].polygon;
+  const Polygon3& corners = polygon[e];
   glm::dvec3 bestPoint = patchCentre[p];
   // The first point that sees no backs cannot be beaten; the frame of a point chosen last is
   // still the renderer's and serves the shot.
@@ -600,11 +624,12 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       // elements in front of the plane see: j's front, unless another object is in the way (j's
       // own solid cannot be when it is convex). Without this a floor patch reaching around a box
       // left the box's face 15% too dark.
-      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
+      const Receiver r = receiverOf(j);
+      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, r));
       const bool behind = glm::dot(normalOf(j), eye) <= offset[j];
       const Judged& k = out.judged.emplace_back(Judged{j, behind ? Judged::kNearBehind : Judged::kNear, v});
       if (k.integrated())
-        planPatchToReceiver(*trees[p], elementsOf(p), receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
+        planPatchToReceiver(*trees[p], pieces, eyeNormal, r, settings.nearFieldRatio,
                             settings.pieceRatio, settings.maxShooterSplits, out.plans);
       ++nearCount;
     } else {
@@ -613,7 +638,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       if (glm::dot(normalOf(j), eye) <= offset[j]) continue;
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
-      const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
+      const double unoccluded = pointToReceiver(eye, eyeNormal, receiverOf(j));
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
       const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded) : 0;
       out.judged.push_back({j, Judged::kSmallFront, unoccluded * v});  // its front faces the centre (above)
@@ -654,7 +679,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
     } else if (k.integrated()) {
       const NearPlanSize size = plans.sizes[plan++];
       applyPlan(*trees[p], nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
-                receiver[j], f.front, f.back);
+                receiverOf(j), f.front, f.back);
       step += size.steps;
       factor += size.factors;
       if (k.kind != Judged::kNearBehind) f.front *= k.value;
@@ -785,8 +810,8 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
 
   // Near and small receivers get new factors, per channel (near ones weigh the shooter's
   // elements by their unshot light), judged on the graphics processors (which read p's tree).
-  treeOf(p);
-  const auto elements = static_cast<uint32_t>(receiver.size());
+  readyToJudge(p);
+  const auto elements = static_cast<uint32_t>(polygon.size());
   renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
     if (before)
       rejudgeReceivers(p, before->judgedOf(c), before->plansOf(c), chunks[c]);
@@ -1013,8 +1038,8 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
   // Elements go on by their keys (on a surface no change named: all of them, as they were):
   // they keep their light.
   auto edit = std::make_unique<Edit>();
-  edit->elementNow.assign(old.receiver.size(), kNone);
-  std::vector<uint8_t> changedBefore(old.receiver.size(), 0), mappedNow(n.receiver.size(), 0);
+  edit->elementNow.assign(old.polygon.size(), kNone);
+  std::vector<uint8_t> changedBefore(old.polygon.size(), 0), mappedNow(n.polygon.size(), 0);
   std::vector<uint32_t> changed[2];  // elements that moved or went (before), moved or came (now)
   for (size_t si = 0; si < given.size(); ++si) {
     const State::SurfaceData &a = old.surfaces[si], &b = n.surfaces[si];
@@ -1033,7 +1058,7 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
       if (found != byKey.end() && found->first == b.keyOf(k)) edit->elementNow[found->second] = b.firstElement + k;
     }
   }
-  for (uint32_t j = 0; j < old.receiver.size(); ++j) {
+  for (uint32_t j = 0; j < old.polygon.size(); ++j) {
     const uint32_t i = edit->elementNow[j];
     if (i == kNone) {
       // Gone: its unshot light leaves with it.
@@ -1045,19 +1070,19 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
     mappedNow[i] = 1;
     n.radiance[i] = old.radiance[j];
     n.elementUnshot[i] = old.elementUnshot[j];
-    if (!sameCorners(old.receiver[j].polygon, n.receiver[i].polygon)) {
+    if (!sameCorners(old.polygon[j], n.polygon[i])) {
       changedBefore[j] = 1;
       changed[0].push_back(j);
       changed[1].push_back(i);
     }
   }
-  for (uint32_t i = 0; i < n.receiver.size(); ++i)
+  for (uint32_t i = 0; i < n.polygon.size(); ++i)
     if (!mappedNow[i]) {
       n.stats.removedPower -= kPi * n.elementUnshot[i] * n.area[i];  // starts at its emission
       changed[1].push_back(i);
     }
-  edit->elementBefore.assign(n.receiver.size(), kNone);
-  for (uint32_t j = 0; j < old.receiver.size(); ++j)
+  edit->elementBefore.assign(n.polygon.size(), kNone);
+  for (uint32_t j = 0; j < old.polygon.size(); ++j)
     if (edit->elementNow[j] != kNone) edit->elementBefore[edit->elementNow[j]] = j;
   // Patches split before (their centres were under a solid) are split alike now where their
   // elements are the same, so that their light is corrected part by part as it was sent.
@@ -1076,7 +1101,7 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
     }
   }
   n.stats.splitPatches = splits;
-  edit->changedNow.assign(n.receiver.size(), 0);
+  edit->changedNow.assign(n.polygon.size(), 0);
   for (uint32_t i : changed[1]) edit->changedNow[i] = 1;
   // Per surface and geometry, spheres around its changed elements (a few dozen in each): a
   // tighter bound on what a patch sees of them than their sum, and the window a correction looks
@@ -1366,7 +1391,7 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   // Judged again: the changed elements, and the others whose pixels or targets differ.
   const size_t changedWidth = static_cast<size_t>(changedWindow.x1 - changedWindow.x0);
   w.differs.assign(static_cast<size_t>(pixelsOf(changedWindow)), 0);
-  if (w.marked.size() < old.receiver.size()) w.marked.resize(old.receiver.size(), 0);
+  if (w.marked.size() < old.polygon.size()) w.marked.resize(old.polygon.size(), 0);
   const uint32_t mark = ++w.correction;
   for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
     for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
@@ -1436,8 +1461,8 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
     }
   for (int side = 0; side < 2; ++side) {
     std::vector<uint32_t>& count = w.pixelCount;
-    if (count.size() < std::max(old.receiver.size(), now.receiver.size()))
-      count.resize(std::max(old.receiver.size(), now.receiver.size()), 0);
+    if (count.size() < std::max(old.polygon.size(), now.polygon.size()))
+      count.resize(std::max(old.polygon.size(), now.polygon.size()), 0);
     w.counted.clear();
     for (int y = cull.window.y0; y < cull.window.y1; ++y)
       for (int x = cull.window.x0; x < cull.window.x1; ++x) {
@@ -1497,7 +1522,7 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
 
   // The receivers judged before, but those the window judged again, chunk by chunk; then those,
   // judged on its frame now (with the pixel factors now), in the last chunk.
-  rejudged.assign(old.receiver.size(), 0);
+  rejudged.assign(old.polygon.size(), 0);
   if (w)
     for (uint32_t j : w->judged[0]) rejudged[j] = 1;
   State::KeptShot::ChunkStart to{}, from{};
@@ -1527,7 +1552,7 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
   if (w) {
     for (const pxpl5::IdFactor& f : shot.factors) now.pixelFactor[f.id] = f.factor;
     const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaceNormal[now.patchSurface[q]]));
-    now.treeOf(q);
+    now.readyToJudge(q);
     for (uint32_t i : w->judged[1]) {
       now.judgeReceivers(q, w->frame[1], axes, i, i + 1, judging);
       shot.judged.insert(shot.judged.end(), judging.judged.begin(), judging.judged.end());
@@ -1670,7 +1695,7 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
   std::vector<double> weight(s.vertexCount, 0.0);
   for (uint32_t e = 0; e < s.elementCount; ++e) {
     const uint32_t j = s.firstElement + e;
-    for (int k = 0; k < st.receiver[j].polygon.n; ++k) {
+    for (int k = 0; k < st.polygon[j].n; ++k) {
       sum[s.corners[e][k]] += st.area[j] * st.radiance[j];
       weight[s.corners[e][k]] += st.area[j];
     }
@@ -1683,7 +1708,7 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
 
 const Stats& Solver::stats() const { return state_->stats; }
 size_t Solver::surfaceCount() const { return state_->surfaces.size(); }
-size_t Solver::elementCount() const { return state_->receiver.size(); }
+size_t Solver::elementCount() const { return state_->polygon.size(); }
 size_t Solver::patchCount() const { return state_->unshot.size(); }
 
 }  // namespace radiosity
