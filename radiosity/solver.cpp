@@ -102,9 +102,11 @@ struct Solver::State {
   std::vector<glm::dvec3> surfaceNormal;
 
   // Per element (global index = the pxpl5 polygon index and id). Its Receiver (form_factors.h)
-  // is made when it is judged (receiverOf): held, with its Gauss rule, it was 320 bytes an
-  // element, half of the solver's memory, for the few that each shot judges.
+  // is made when it is judged (receiverOf): held, with its Gauss rule's points, it was 320 bytes
+  // an element, half of the solver's memory. The rule's weights are kept (gaussWeights: the
+  // costly part, and most elements are judged as small receivers by most shots).
   std::vector<Polygon3> polygon;
+  std::vector<std::array<double, 4>> ruleWeight;
   std::vector<glm::dvec3> centre, radiance;
   const glm::dvec3& normalOf(uint32_t j) const { return surfaceNormal[surfaceOf[j]]; }
   ElementPlanes planes() const { return {surfaceNormal, offset, surfaceOf}; }
@@ -139,7 +141,7 @@ struct Solver::State {
     r.normal = normalOf(j);
     r.offset = offset[j];
     r.area = area[j];
-    r.lanes = gaussLanes(polygon[j]);
+    r.lanes = gaussLanes(polygon[j], ruleWeight[j]);
     return r;
   }
 
@@ -366,6 +368,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
   surfaces.reserve(input.size());
   surfaceNormal.reserve(input.size());
   polygon.reserve(elementTotal);
+  ruleWeight.reserve(elementTotal);
   for (auto* v : {&centre, &radiance, &elementUnshot}) v->reserve(elementTotal);
   sent.reserve(elementTotal);
   for (auto* v : {&radius, &area, &offset}) v->reserve(elementTotal);
@@ -414,6 +417,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       const Polygon3& p = r.polygon;
       const auto j = static_cast<uint32_t>(polygon.size());
       polygon.push_back(p);
+      ruleWeight.push_back({r.lanes.weight[0], r.lanes.weight[1], r.lanes.weight[2], r.lanes.weight[3]});
       centre.push_back(r.centre);
       offset.push_back(r.offset);
       radius.push_back(r.radius);
