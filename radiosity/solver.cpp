@@ -115,11 +115,19 @@ struct Solver::State {
   // (Solver::edit) sends back exactly what the shots sent, however unevenly the patch's elements
   // were lit each time and however each shot's energy was kept (distribute): the radiance sent,
   // and the same weighed by each shot's scale of its judged receivers (near ones integrate over
-  // the patch element by element). A patch's is its elements' area-weighted mean.
+  // the patch element by element). A patch's is its elements' area-weighted mean. Only the
+  // elements of patches that have shot have sent anything: their records are held apart, and an
+  // element without one (sentAt kNone) has sent nothing.
   struct Sent {
     glm::dvec3 light{0}, judged{0};
   };
-  std::vector<Sent> sent;
+  std::vector<uint32_t> sentAt;  // per element: its record in sentRecords, or kNone
+  std::vector<Sent> sentRecords;
+  Sent sentOf(uint32_t e) const { return sentAt[e] == kNone ? Sent{} : sentRecords[sentAt[e]]; }
+  Sent& sentRecord(uint32_t e) {
+    if (sentAt[e] == kNone) sentAt[e] = static_cast<uint32_t>(sentRecords.size()), sentRecords.emplace_back();
+    return sentRecords[sentAt[e]];
+  }
   std::vector<double> radius, area, offset;
   std::vector<uint32_t> surfaceOf, patchOf;
   // Where the item buffer is read for element j's visibility: its centroid, then the points a
@@ -311,8 +319,9 @@ struct Solver::State {
   Sent sentBy(uint32_t p) const {
     Sent sum;
     for (uint32_t e : elementsOf(p)) {
-      sum.light += area[e] * sent[e].light;
-      sum.judged += area[e] * sent[e].judged;
+      const Sent own = sentOf(e);
+      sum.light += area[e] * own.light;
+      sum.judged += area[e] * own.judged;
     }
     return {sum.light / patchArea[p], sum.judged / patchArea[p]};
   }
@@ -321,8 +330,9 @@ struct Solver::State {
   void recordSent(uint32_t p, std::span<const glm::dvec3> light) {
     const std::span<const uint32_t> own = elementsOf(p);
     for (size_t k = 0; k < own.size(); ++k) {
-      sent[own[k]].light += light[k];
-      sent[own[k]].judged += light[k] * lastScale.judged;
+      Sent& record = sentRecord(own[k]);
+      record.light += light[k];
+      record.judged += light[k] * lastScale.judged;
     }
   }
   void shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen);
@@ -370,7 +380,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
   polygon.reserve(elementTotal);
   ruleWeight.reserve(elementTotal);
   for (auto* v : {&centre, &radiance, &elementUnshot}) v->reserve(elementTotal);
-  sent.reserve(elementTotal);
+  sentAt.reserve(elementTotal);
   for (auto* v : {&radius, &area, &offset}) v->reserve(elementTotal);
   for (auto* v : {&surfaceOf, &patchOf, &patchElements}) v->reserve(elementTotal);
   soupVertices.reserve(elementTotal * 4);
@@ -425,7 +435,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       surfaceOf.push_back(static_cast<uint32_t>(si));
       radiance.push_back(s.emission);
       elementUnshot.push_back(s.emission);
-      sent.emplace_back();
+      sentAt.push_back(kNone);
       const uint32_t local = s.patchOfElement.empty() ? e : s.patchOfElement[e];
       patches = std::max(patches, local + 1);
       if (members.size() < s.firstPatch + patches) members.resize(s.firstPatch + patches);
@@ -1155,7 +1165,7 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
   // they still form the patch that sent it (it is taken back along that patch's frame).
   for (uint32_t p = 0; p < old.unshot.size(); ++p) {
     double power = 0;
-    for (uint32_t j : old.elementsOf(p)) power += kPi * channelSum(old.sent[j].light) * old.area[j];
+    for (uint32_t j : old.elementsOf(p)) power += kPi * channelSum(old.sentOf(j).light) * old.area[j];
     if (power == 0) continue;
     const uint32_t same = edit->samePatch(old, n, p);
     bool itself = same == kNone;
@@ -1172,7 +1182,8 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
       continue;
     }
     // It sees nothing of the change and sees what it saw: the point it chose and its frame stand.
-    for (uint32_t j : old.elementsOf(p)) n.sent[edit->elementNow[j]] = old.sent[j];
+    for (uint32_t j : old.elementsOf(p))
+      if (old.sentAt[j] != kNone) n.sentRecord(edit->elementNow[j]) = old.sentRecords[old.sentAt[j]];
     n.adoptPoint(same, old.patchCentre[p], old.patchRadius[p], old.pointBackShare[p]);
     if (old.keptShot(p)) edit->moveShot(old, n, p, same, nullptr);
   }
@@ -1218,7 +1229,7 @@ void Solver::takeBack(uint32_t p) {
   // the radiance. What fell on removed elements comes off their ledger.
   const State::Sent S = before.sentBy(p);
   before.sending.clear();
-  for (uint32_t e : before.elementsOf(p)) before.sending.push_back(before.sent[e].judged);
+  for (uint32_t e : before.elementsOf(p)) before.sending.push_back(before.sentOf(e).judged);
   before.lightPatch(p, S.judged, before.sending);
   const State::Replay replay{S.light, S.judged};
   const double area = before.patchArea[p];
@@ -1240,7 +1251,7 @@ void Solver::sendAgain(uint32_t p) {
   from.clear();
   for (uint32_t j : before.elementsOf(p)) {
     const uint32_t i = edit_->elementNow[j];
-    if (i == kNone) now.stats.removedPower += kPi * before.sent[j].light * before.area[j];
+    if (i == kNone) now.stats.removedPower += kPi * before.sentOf(j).light * before.area[j];
     else from.push_back(i);
   }
   // The frame of the last point chosen is still the renderer's: it is that patch's shot frame.
@@ -1276,7 +1287,7 @@ void Solver::sendAgain(uint32_t p) {
     glm::dvec3 dB{0};
     for (uint32_t i : now.elementsOf(q)) {
       const bool carrying = std::binary_search(from.begin(), from.end(), i);
-      dB += now.area[i] * carried.emplace_back(carrying ? before.sent[edit_->elementBefore[i]].light : glm::dvec3(0));
+      dB += now.area[i] * carried.emplace_back(carrying ? before.sentOf(edit_->elementBefore[i]).light : glm::dvec3(0));
     }
     dB /= now.patchArea[q];
     now.lightPatch(q, dB, carried);
