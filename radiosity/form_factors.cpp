@@ -211,11 +211,8 @@ glm::dvec3 gaussPoint(const Polygon3& p, int k) {
 }  // namespace
 
 std::array<double, 4> gaussWeights(const Polygon3& p) {
+  if (p.n == 3) return {1.0 / 3, 1.0 / 3, 1.0 / 3, 0};
   std::array<double, 4> weight{};
-  if (p.n == 3) {
-    weight = {1.0 / 3, 1.0 / 3, 1.0 / 3, 0};
-    return weight;
-  }
   const glm::dvec3 &a = p.v[0], &b = p.v[1], &c = p.v[2], &d = p.v[3];
   double total = 0;
   for (int k = 0; k < 4; ++k) {

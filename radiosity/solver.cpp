@@ -101,10 +101,10 @@ struct Solver::State {
   // rest for the loops over every element.
   std::vector<glm::dvec3> surfaceNormal;
 
-  // Per element (global index = the pxpl5 polygon index and id). Its Receiver (form_factors.h)
-  // is made when it is judged (receiverOf): held, with its Gauss rule's points, it was 320 bytes
-  // an element, half of the solver's memory. The rule's weights are kept (gaussWeights: the
-  // costly part, and most elements are judged as small receivers by most shots).
+  // Per element (global index = the pxpl5 polygon index and id). Its Receiver (form_factors.h,
+  // 320 bytes, mostly copies of the arrays below) is made when it is judged (receiverOf): only
+  // its polygon and its Gauss rule's weights are held, the weights because they are the costly
+  // part of the rule and most elements are judged, as small receivers, by most shots.
   std::vector<Polygon3> polygon;
   std::vector<std::array<double, 4>> ruleWeight;
   std::vector<glm::dvec3> centre, radiance;
