@@ -241,6 +241,8 @@ TEST(RadiositySolver, HoldsUnderHalfAKilobyteAnElement) {
     return held;
   };
   const Held small = heldBy(1.0 / 64), large = heldBy(1.0 / 128);
+  // The sanitizers' allocators keep their own counts: mallinfo2 sees nothing.
+  if (large.constructed <= 0) GTEST_SKIP() << "mallinfo2 counts no heap under this allocator";
   ASSERT_GT(large.elements, 3 * small.elements);
   const auto perElement = [&](double Held::*bytes) {
     return (large.*bytes - small.*bytes) / static_cast<double>(large.elements - small.elements);
