@@ -300,7 +300,9 @@ struct Solver::State {
   std::span<const uint32_t> elementsOf(uint32_t p) const {
     return {patchElements.data() + patchFirst[p], patchLast[p] - patchFirst[p]};
   }
-  void setUpPatch(uint32_t p, uint32_t first, uint32_t last);
+  // `ordered`: p's elements in the order its tree puts them, when known (a patch of a surface no
+  // edit named, from the state before), so that no tree is built to find it.
+  void setUpPatch(uint32_t p, uint32_t first, uint32_t last, std::span<const uint32_t> ordered = {});
   const pxpl5::HemisphereFrame& frameFrom(uint32_t p, const glm::dvec3& point);
   const pxpl5::HemisphereFrame* choosePoint(uint32_t p);
   // Takes a point already checked (by an earlier state, or a correction's frame) as patch p's.
@@ -387,6 +389,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
   soupPolygons.reserve(elementTotal);
 
   std::vector<std::vector<uint32_t>> members;  // per global patch, its elements
+  std::vector<std::pair<uint32_t, uint32_t>> patchBefore;  // a kept surface's patches: (now, in `kept`)
   for (size_t si = 0; si < input.size(); ++si) {
     const Surface* in = input[si];
     const std::string where = "radiosity::Solver: surface " + std::to_string(si);
@@ -445,6 +448,8 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       for (int k = 0; k < p.n; ++k) soupVertices.emplace_back(p.v[k]);
     }
     s.patchCount = patches;
+    if (!in)
+      for (uint32_t l = 0; l < patches; ++l) patchBefore.emplace_back(s.firstPatch + l, kept->surfaces[si].firstPatch + l);
   }
 
   for (auto* v : {&patchFirst, &patchLast, &patchSurface}) v->reserve(members.size());
@@ -452,12 +457,23 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
   for (auto* v : {&patchArea, &patchRadius, &pointBackShare}) v->reserve(members.size());
   pointChosen.reserve(members.size());
   trees.reserve(members.size());
+  std::vector<uint32_t> ordered;
+  auto before = patchBefore.begin();
   for (size_t p = 0; p < members.size(); ++p) {
     if (members[p].empty())
       throw std::invalid_argument("radiosity::Solver: patch " + std::to_string(p) + " has no elements");
     const auto first = static_cast<uint32_t>(patchElements.size());
     patchElements.insert(patchElements.end(), members[p].begin(), members[p].end());
-    setUpPatch(static_cast<uint32_t>(p), first, static_cast<uint32_t>(patchElements.size()));
+    // A kept surface's patch that was not split (splitting only takes elements away) has its
+    // elements as before, ordered as before, moved by the surface's new first element.
+    ordered.clear();
+    if (before != patchBefore.end() && before->first == p) {
+      const uint32_t q = (before++)->second, si = surfaceOf[members[p].front()];
+      if (kept->elementsOf(q).size() == members[p].size())
+        for (uint32_t e : kept->elementsOf(q))
+          ordered.push_back(e - kept->surfaces[si].firstElement + surfaces[si].firstElement);
+    }
+    setUpPatch(static_cast<uint32_t>(p), first, static_cast<uint32_t>(patchElements.size()), ordered);
     stats.emittedPower += kPi * surfaces[patchSurface[p]].emission * patchArea[p];
   }
   pixelFactor.assign(polygon.size(), 0.0);
@@ -467,7 +483,7 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
 // Makes patch p (a new one when p is the patch count) of patchElements[first, last): its area,
 // the centre it shoots from, its radius, its tree, its unshot light (its elements' area-weighted
 // mean).
-void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
+void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last, std::span<const uint32_t> ordered) {
   if (p == unshot.size()) {
     for (auto* v : {&patchFirst, &patchLast, &patchSurface}) v->emplace_back();
     for (auto* v : {&patchCentre, &unshot}) v->emplace_back(0.0);
@@ -510,7 +526,19 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   // not held; a split's parts (in their parent's tree's order) keep theirs.
   const bool ascending = std::is_sorted(own.begin(), own.end());
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
+  if (!ordered.empty()) {
+    const auto treeOrder = [&] {
+      std::vector<uint32_t> order(own.begin(), own.end());
+      buildPatchTree(order, shapes(), axes.x, axes.y);
+      return order;
+    };
+    DCHECK(ascending && std::ranges::equal(treeOrder(), ordered));
+    std::copy(ordered.begin(), ordered.end(), own.begin());
+    trees[p] = nullptr;
+    return;
+  }
   PatchTree tree = buildPatchTree(own, shapes(), axes.x, axes.y);
+  ++stats.patchTrees;
   trees[p] = ascending ? nullptr : std::make_unique<PatchTree>(std::move(tree));
 }
 
@@ -520,6 +548,7 @@ const PatchTree& Solver::State::treeOf(uint32_t p) {
     std::sort(given.begin(), given.end());
     const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
     trees[p] = std::make_unique<PatchTree>(buildPatchTree(given, shapes(), axes.x, axes.y));
+    ++stats.patchTrees;
     DCHECK(std::equal(given.begin(), given.end(), elementsOf(p).begin()));
   }
   return *trees[p];
@@ -1045,7 +1074,9 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
   auto now = std::make_unique<State>(old.settings);
   State& n = *now;
   n.build(given, &old);
+  const uint64_t trees = n.stats.patchTrees;  // the replaced surfaces' patches'
   n.stats = old.stats;  // the ledgers go on; emission does not change
+  n.stats.patchTrees += trees;
   n.stats.editedSurfaces += changes.size();
   n.pixelShare = old.pixelShare;
 
