@@ -191,26 +191,46 @@ double contourSum(const glm::dvec3* v, int m, const glm::dvec3& normal) {
   return contourSumReference(v, m, normal);
 }
 
-Quadrature gaussRule(const Polygon3& p) {
-  Quadrature rule;
+namespace {
+
+// The rule's Gauss points: a triangle's at its barycentric (2/3, 1/6, 1/6) and turns, a quad's
+// on its bilinear map at u, v in {1/2 -+ 1/(2 sqrt 3)}, u the outer loop.
+constexpr double kGaussQuad[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+constexpr double kGaussTriangle[3][3] = {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
+
+glm::dvec3 gaussPoint(const Polygon3& p, int k) {
   if (p.n == 3) {
-    const double b[3][3] = {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
-    for (const auto& w : b) {
-      rule.point[rule.n] = w[0] * p.v[0] + w[1] * p.v[1] + w[2] * p.v[2];
-      rule.weight[rule.n++] = 1.0 / 3;
-    }
-    return rule;
+    const double* w = kGaussTriangle[k];
+    return w[0] * p.v[0] + w[1] * p.v[1] + w[2] * p.v[2];
   }
-  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  const double u = kGaussQuad[k / 2], v = kGaussQuad[k % 2];
+  const glm::dvec3 &a = p.v[0], &b = p.v[1], &c = p.v[2], &d = p.v[3];
+  return (1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d;
+}
+
+}  // namespace
+
+std::array<double, 4> gaussWeights(const Polygon3& p) {
+  if (p.n == 3) return {1.0 / 3, 1.0 / 3, 1.0 / 3, 0};
+  std::array<double, 4> weight{};
   const glm::dvec3 &a = p.v[0], &b = p.v[1], &c = p.v[2], &d = p.v[3];
   double total = 0;
-  for (double u : g)
-    for (double v : g) {
-      rule.point[rule.n] = (1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d;
-      const glm::dvec3 du = (1 - v) * (b - a) + v * (c - d), dv = (1 - u) * (d - a) + u * (c - b);
-      total += rule.weight[rule.n++] = glm::length(glm::cross(du, dv));  // the map's area scale there
-    }
-  for (double& w : rule.weight) w /= total;
+  for (int k = 0; k < 4; ++k) {
+    const double u = kGaussQuad[k / 2], v = kGaussQuad[k % 2];
+    const glm::dvec3 du = (1 - v) * (b - a) + v * (c - d), dv = (1 - u) * (d - a) + u * (c - b);
+    total += weight[k] = glm::length(glm::cross(du, dv));  // the map's area scale there
+  }
+  for (double& w : weight) w /= total;
+  return weight;
+}
+
+Quadrature gaussRule(const Polygon3& p) {
+  Quadrature rule;
+  const std::array<double, 4> weight = gaussWeights(p);
+  for (rule.n = 0; rule.n < (p.n == 3 ? 3 : 4); ++rule.n) {
+    rule.point[rule.n] = gaussPoint(p, rule.n);
+    rule.weight[rule.n] = weight[rule.n];
+  }
   return rule;
 }
 
@@ -222,14 +242,20 @@ Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal) {
   r.normal = normal;
   r.offset = glm::dot(r.normal, r.centre);
   r.area = polygonArea(p);
-  r.rule = gaussRule(p);
-  for (int k = 0; k < r.rule.n; ++k) {
-    r.lanes.x[k] = r.rule.point[k].x;
-    r.lanes.y[k] = r.rule.point[k].y;
-    r.lanes.z[k] = r.rule.point[k].z;
-    r.lanes.weight[k] = r.rule.weight[k];
-  }
+  r.lanes = gaussLanes(p, gaussWeights(p));
   return r;
+}
+
+Receiver::RuleLanes gaussLanes(const Polygon3& p, const std::array<double, 4>& weights) {
+  Receiver::RuleLanes lanes{};
+  for (int k = 0; k < (p.n == 3 ? 3 : 4); ++k) {
+    const glm::dvec3 point = gaussPoint(p, k);
+    lanes.x[k] = point.x;
+    lanes.y[k] = point.y;
+    lanes.z[k] = point.z;
+    lanes.weight[k] = weights[k];
+  }
+  return lanes;
 }
 
 double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
@@ -243,10 +269,10 @@ double pointToReceiver(const glm::dvec3& point, const glm::dvec3& normal, const 
 double gaussSumReference(const glm::dvec3& point, const glm::dvec3& normal, const Receiver& r) {
   // cos at the point x cos at the receiver / (pi d^2), each cosine a dot over d.
   double sum = 0;
-  for (int k = 0; k < r.rule.n; ++k) {
-    const glm::dvec3 d = r.rule.point[k] - point;
+  for (int k = 0; k < r.polygon.n; ++k) {
+    const glm::dvec3 d = glm::dvec3(r.lanes.x[k], r.lanes.y[k], r.lanes.z[k]) - point;
     const double d2 = glm::dot(d, d);
-    sum += r.rule.weight[k] * glm::dot(d, normal) * std::abs(glm::dot(d, r.normal)) / (d2 * d2);
+    sum += r.lanes.weight[k] * glm::dot(d, normal) * std::abs(glm::dot(d, r.normal)) / (d2 * d2);
   }
   return sum;
 }
@@ -274,7 +300,7 @@ namespace {
   alignas(32) double lane[4];
   _mm256_store_pd(lane, terms);
   double sum = 0;
-  for (int k = 0; k < r.rule.n; ++k) sum += lane[k];
+  for (int k = 0; k < r.polygon.n; ++k) sum += lane[k];
   return sum;
 }
 #endif
@@ -351,7 +377,12 @@ void areaToPolygon(const Polygon3& piece, double weight, const glm::dvec3& norma
 
 void areaToPolygon(const Receiver& piece, double weight, const glm::dvec3& normal, const Receiver& r, double farRatio,
                    double ratio, int splits, double& front, double& back) {
-  integrate(piece.polygon, piece.centre, piece.radius, &piece.rule, weight, normal, r, farRatio, ratio, splits, front,
+  Quadrature rule;
+  for (rule.n = 0; rule.n < piece.polygon.n; ++rule.n) {
+    rule.point[rule.n] = {piece.lanes.x[rule.n], piece.lanes.y[rule.n], piece.lanes.z[rule.n]};
+    rule.weight[rule.n] = piece.lanes.weight[rule.n];
+  }
+  integrate(piece.polygon, piece.centre, piece.radius, &rule, weight, normal, r, farRatio, ratio, splits, front,
             back);
 }
 

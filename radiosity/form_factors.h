@@ -41,6 +41,9 @@ struct Quadrature {
   int n = 0;
 };
 Quadrature gaussRule(const Polygon3& p);
+// Its weights alone (a triangle's fourth is 0): the costly part of the rule (a root and a
+// division per point), which gaussLanes makes the whole rule from again.
+std::array<double, 4> gaussWeights(const Polygon3& p);
 
 // A receiving element: its polygon and bounding sphere, its plane (dot(normal, q) == offset),
 // whose front alone reflects, and its area and Gauss rule. makeReceiver takes the front's unit
@@ -52,14 +55,16 @@ struct Receiver {
   glm::dvec3 normal{0};
   double offset = 0;
   double area = 0;
-  Quadrature rule;
-  // The rule's points and weights by coordinate, for the vector lanes (a triangle's fourth
-  // weight is 0).
+  // The Gauss rule (gaussRule: polygon.n points) by coordinate, for the vector lanes (a
+  // triangle's fourth weight is 0).
   struct RuleLanes {
     alignas(32) double x[4], y[4], z[4], weight[4];
   } lanes{};
 };
 Receiver makeReceiver(const Polygon3& p, const glm::dvec3& normal);
+// gaussRule(p) as Receiver::lanes, from its `weights` (gaussWeights(p)): what makeReceiver
+// gives, for a caller that holds the rest.
+Receiver::RuleLanes gaussLanes(const Polygon3& p, const std::array<double, 4>& weights);
 
 // A point at least this many receiver radii from the receiver's centre, with the receiver wholly
 // above its horizon, takes the factor from the receiver's Gauss rule: Lambert's differential

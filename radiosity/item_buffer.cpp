@@ -31,8 +31,8 @@ double itemBufferVisibility(const pxpl5::HemisphereFrame& frame, const Hemispher
       continue;
     }
     // Where the seen polygon's plane meets the segment, as a fraction of it.
-    const double along = glm::dot(planes.normal[seen], d);
-    const double t = along != 0 ? (planes.offset[seen] - glm::dot(planes.normal[seen], eye)) / along : -1;
+    const double along = glm::dot(planes.normal(seen), d);
+    const double t = along != 0 ? (planes.offset[seen] - glm::dot(planes.normal(seen), eye)) / along : -1;
     if (!(t > 0 && t < 1 - 1e-9)) ++visible;
   }
   return considered > 0 ? double(visible) / double(considered) : 1.0;

@@ -22,11 +22,13 @@ struct HemisphereAxes {
 };
 HemisphereAxes hemisphereAxes(const glm::vec3& normal);
 
-// Per element: its plane (dot(normal, q) == offset) and its surface.
+// Per element: its plane (dot(normal, q) == offset) and its surface; the normal is its
+// surface's (surfaceNormal, per surface), held once.
 struct ElementPlanes {
-  std::span<const glm::dvec3> normal;
+  std::span<const glm::dvec3> surfaceNormal;
   std::span<const double> offset;
   std::span<const uint32_t> surface;
+  const glm::dvec3& normal(uint32_t element) const { return surfaceNormal[surface[element]]; }
 };
 
 // The pixel of a hemisphere image `resolution` across whose item is read for `target` seen

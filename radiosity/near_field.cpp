@@ -36,7 +36,7 @@ void addPoint(const glm::dvec3& point, const glm::dvec3& weight, const glm::dvec
 
 }  // namespace
 
-PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver> receivers, const glm::dvec3& x,
+PatchTree buildPatchTree(std::span<uint32_t> elements, const ElementShapes& shapes, const glm::dvec3& x,
                          const glm::dvec3& y) {
   PatchTree tree;
   tree.x = x;
@@ -46,14 +46,14 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
     double a = 0;
     glm::dvec3 c{0};
     for (uint32_t k = first; k < last; ++k) {
-      const Receiver& e = receivers[elements[k]];
-      a += e.area, c += e.area * e.centre;
+      const uint32_t e = elements[k];
+      a += shapes.area[e], c += shapes.area[e] * shapes.centre[e];
     }
     return c / a;
   };
   tree.origin = centroid(0, static_cast<uint32_t>(elements.size()));
   const auto planeOf = [&](uint32_t e) {
-    const glm::dvec3 d = receivers[e].centre - tree.origin;
+    const glm::dvec3 d = shapes.centre[e] - tree.origin;
     return glm::dvec2(glm::dot(d, x), glm::dot(d, y));
   };
   const auto addNode = [&](uint32_t first, uint32_t last) {
@@ -64,7 +64,7 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
     n.low = glm::dvec3(INFINITY);
     n.high = glm::dvec3(-INFINITY);
     for (uint32_t k = first; k < last; ++k) {
-      const Polygon3& p = receivers[elements[k]].polygon;
+      const Polygon3& p = shapes.polygon[elements[k]];
       for (int i = 0; i < p.n; ++i) {
         n.radius = std::max(n.radius, glm::length(p.v[i] - n.centre));
         const glm::dvec3 d = p.v[i] - tree.origin, local{glm::dot(d, x), glm::dot(d, y), glm::dot(d, tree.z)};
@@ -116,9 +116,11 @@ PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver>
     PatchTree::Node& node = tree.nodes[n];
     Moments& m = moments[n];
     if (node.children == 0) {
-      const Receiver& e = receivers[elements[node.first]];
+      const uint32_t e = elements[node.first];
+      const double area = shapes.area[e];
       const glm::dvec2 p = tree.plane[node.first];
-      m = {e.area, e.area * p, e.area * (glm::dvec3(p.x * p.x, p.x * p.y, p.y * p.y) + areaMoments(e.polygon, e.centre, x, y))};
+      m = {area, area * p,
+           area * (glm::dvec3(p.x * p.x, p.x * p.y, p.y * p.y) + areaMoments(shapes.polygon[e], shapes.centre[e], x, y))};
       continue;
     }
     for (uint32_t c = node.child; c < node.child + node.children; ++c)
@@ -171,9 +173,8 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
   }
 }
 
-void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elements, std::span<const Receiver> receivers,
-                         const glm::dvec3& normal, const Receiver& r, double farRatio, double ratio, int splits,
-                         NearPlans& out) {
+void planPatchToReceiver(const PatchTree& tree, std::span<const Receiver> pieces, const glm::dvec3& normal,
+                         const Receiver& r, double farRatio, double ratio, int splits, NearPlans& out) {
   const size_t steps = out.steps.size(), factors = out.factors.size();
   // Heights over r's plane in the tree's coordinates: at the origin, and per unit along each axis.
   const double originHeight = glm::dot(r.normal, tree.origin) - r.offset;
@@ -182,7 +183,7 @@ void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elemen
     const PatchTree::Node& node = tree.nodes[n];
     if (node.children == 0) {
       double f = 0, b = 0;
-      areaToPolygon(receivers[elements[node.first]], 1.0, normal, r, farRatio, ratio, splits, f, b);
+      areaToPolygon(pieces[node.first], 1.0, normal, r, farRatio, ratio, splits, f, b);
       out.steps.push_back({n, NearStep::kElement});
       out.factors.emplace_back(f, b);
       return;
@@ -224,11 +225,11 @@ void applyPlan(const PatchTree& tree, std::span<const NodeLight> light, std::spa
   }
 }
 
-void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
-                     std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
-                     double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back) {
+void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const Receiver> pieces,
+                     const glm::dvec3& normal, const Receiver& r, double farRatio, double ratio, int splits,
+                     glm::dvec3& front, glm::dvec3& back) {
   NearPlans plan;
-  planPatchToReceiver(tree, elements, receivers, normal, r, farRatio, ratio, splits, plan);
+  planPatchToReceiver(tree, pieces, normal, r, farRatio, ratio, splits, plan);
   applyPlan(tree, light, plan.steps, plan.factors, normal, r, front, back);
 }
 

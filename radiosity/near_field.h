@@ -43,11 +43,18 @@ struct PatchTree {
   glm::dvec3 origin{0}, x{0}, y{0}, z{0};
 };
 
-// Builds the tree over a patch's elements (indices into `receivers`, all in one plane with unit
+// Per element: its polygon, its area's centroid (polygonCentroid) and its area.
+struct ElementShapes {
+  std::span<const Polygon3> polygon;
+  std::span<const glm::dvec3> centre;
+  std::span<const double> area;
+};
+
+// Builds the tree over a patch's elements (indices into `shapes`, all in one plane with unit
 // axes x and y) and reorders `elements` so that each node's elements are contiguous. Clusters
 // split at their centroid into quadrants (in half along the plane's u axis when the quadrants
 // would not divide them).
-PatchTree buildPatchTree(std::span<uint32_t> elements, std::span<const Receiver> receivers, const glm::dvec3& x,
+PatchTree buildPatchTree(std::span<uint32_t> elements, const ElementShapes& shapes, const glm::dvec3& x,
                          const glm::dvec3& y);
 
 // A node's share of one shot: per channel the sum of its elements' shares of the patch's unshot
@@ -70,13 +77,13 @@ void lightPatchTree(const PatchTree& tree, std::span<const glm::dvec3> shares, s
 // Adds to front/back (per channel) the form factor from the patch to `r`, unoccluded, weighted by
 // the shares: from the root down, a node that r's plane does not cut and that is farther from
 // r's bounding sphere than `ratio` times its radius counts by its four points, others by their
-// children; a leaf's element by areaToPolygon with `farRatio`, `ratio` and `splits`. `elements` are
-// the patch's, in tree order; `normal` is the patch's. A node is cut by r's plane when its corners
-// lie on both sides of it (by its box), not merely near it: a patch touching r's plane (a floor
-// patch at the foot of a wall) sees r's front from all of it.
-void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const uint32_t> elements,
-                     std::span<const Receiver> receivers, const glm::dvec3& normal, const Receiver& r,
-                     double farRatio, double ratio, int splits, glm::dvec3& front, glm::dvec3& back);
+// children; a leaf's element by areaToPolygon with `farRatio`, `ratio` and `splits`. `pieces` are
+// the patch's elements as receivers, in tree order; `normal` is the patch's. A node is cut by r's
+// plane when its corners lie on both sides of it (by its box), not merely near it: a patch
+// touching r's plane (a floor patch at the foot of a wall) sees r's front from all of it.
+void patchToReceiver(const PatchTree& tree, std::span<const NodeLight> light, std::span<const Receiver> pieces,
+                     const glm::dvec3& normal, const Receiver& r, double farRatio, double ratio, int splits,
+                     glm::dvec3& front, glm::dvec3& back);
 
 // patchToReceiver in two halves, for a patch that shoots at the same receivers again and again
 // with its light spread differently each time. Which nodes count by their points and which
@@ -106,9 +113,8 @@ struct NearPlansView {
 };
 
 // Appends r's plan to `out`, the arguments as patchToReceiver's.
-void planPatchToReceiver(const PatchTree& tree, std::span<const uint32_t> elements, std::span<const Receiver> receivers,
-                         const glm::dvec3& normal, const Receiver& r, double farRatio, double ratio, int splits,
-                         NearPlans& out);
+void planPatchToReceiver(const PatchTree& tree, std::span<const Receiver> pieces, const glm::dvec3& normal,
+                         const Receiver& r, double farRatio, double ratio, int splits, NearPlans& out);
 
 // Adds to front/back (per channel) r's plan (`steps`, and `factors` of its kElement steps) made
 // with planPatchToReceiver over `tree`, weighted by `light`; `normal` is the patch's.

@@ -8,7 +8,7 @@ glm::dvec3 gatherUnshot(std::span<const pxpl5::IdFactor> factors, const glm::dve
                         std::span<const glm::dvec3> unshot) {
   glm::dvec3 gathered{0};
   for (const pxpl5::IdFactor& f : factors)
-    if (glm::dot(planes.normal[f.id], eye) > planes.offset[f.id]) gathered += f.factor * unshot[f.id];
+    if (glm::dot(planes.normal(f.id), eye) > planes.offset[f.id]) gathered += f.factor * unshot[f.id];
   return gathered;
 }
 

@@ -115,6 +115,9 @@ struct Stats {
   uint64_t corrections = 0;        // patches whose light was taken back after an edit (Solver::edit)
   uint64_t windowedCorrections = 0;  // of those, corrected in a window of their hemisphere only
   uint64_t editedSurfaces = 0;     // surfaces that edits replaced (Solver::edit)
+  uint64_t patchTrees = 0;         // patches' element trees built (near field): as patches are set
+                                   // up, by edits for the surfaces they replace, and as patches
+                                   // first shoot
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area
   glm::dvec3 absorbedPower{0};     // absorbed by the front of elements, (1 - rho) of what arrives

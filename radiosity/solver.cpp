@@ -88,7 +88,7 @@ struct Solver::State {
   struct SurfaceData {
     uint32_t firstElement = 0, elementCount = 0;
     uint32_t firstPatch = 0, patchCount = 0;
-    glm::dvec3 normal{0}, reflectance{0}, emission{0};
+    glm::dvec3 reflectance{0}, emission{0};
     std::vector<std::array<uint32_t, 4>> corners;
     size_t vertexCount = 0;
     // As given: the elements' shooting patches before any split, and their keys (Surface).
@@ -97,28 +97,61 @@ struct Solver::State {
     uint64_t keyOf(uint32_t element) const { return keys.empty() ? element : keys[element]; }
   };
   std::vector<SurfaceData> surfaces;
+  // Per surface, its unit normal: every element's (normalOf), so held once, and apart from the
+  // rest for the loops over every element.
+  std::vector<glm::dvec3> surfaceNormal;
 
-  // Per element (global index = the pxpl5 polygon index and id). The receivers hold centres, radii
-  // and areas too; the loops over every element read them from the arrays below, which are
-  // denser.
-  std::vector<Receiver> receiver;
-  std::vector<glm::dvec3> centre, normal, radiance;
+  // Per element (global index = the pxpl5 polygon index and id). Its Receiver (form_factors.h,
+  // 320 bytes, mostly copies of the arrays below) is made when it is judged (receiverOf): only
+  // its polygon and its Gauss rule's weights are held, the weights because they are the costly
+  // part of the rule and most elements are judged, as small receivers, by most shots.
+  std::vector<Polygon3> polygon;
+  std::vector<std::array<double, 4>> ruleWeight;
+  std::vector<glm::dvec3> centre, radiance;
+  const glm::dvec3& normalOf(uint32_t j) const { return surfaceNormal[surfaceOf[j]]; }
+  ElementPlanes planes() const { return {surfaceNormal, offset, surfaceOf}; }
   std::vector<glm::dvec3> elementUnshot;  // per element; its patch's unshot is their area-weighted mean
   // Per element, what it has shot along this geometry, so that a take-back after an edit
   // (Solver::edit) sends back exactly what the shots sent, however unevenly the patch's elements
   // were lit each time and however each shot's energy was kept (distribute): the radiance sent,
   // and the same weighed by each shot's scale of its judged receivers (near ones integrate over
-  // the patch element by element). A patch's is its elements' area-weighted mean.
+  // the patch element by element). A patch's is its elements' area-weighted mean. Only the
+  // elements of patches that have shot have sent anything: their records are held apart, and an
+  // element without one (sentAt kNone) has sent nothing.
   struct Sent {
     glm::dvec3 light{0}, judged{0};
   };
-  std::vector<Sent> sent;
+  std::vector<uint32_t> sentAt;  // per element: its record in sentRecords, or kNone
+  std::vector<Sent> sentRecords;
+  Sent sentOf(uint32_t e) const { return sentAt[e] == kNone ? Sent{} : sentRecords[sentAt[e]]; }
+  Sent& sentRecord(uint32_t e) {
+    if (sentAt[e] == kNone) sentAt[e] = static_cast<uint32_t>(sentRecords.size()), sentRecords.emplace_back();
+    return sentRecords[sentAt[e]];
+  }
   std::vector<double> radius, area, offset;
   std::vector<uint32_t> surfaceOf, patchOf;
-  // kTargets per element where the item buffer is read for its visibility: its centroid, then
-  // the points a quarter of the way in from its corners.
+  // Where the item buffer is read for element j's visibility: its centroid, then the points a
+  // quarter of the way in from its corners. Made when read (few elements are), not held.
   static constexpr size_t kTargets = 5;
-  std::vector<glm::dvec3> targets;
+  std::array<glm::dvec3, kTargets> targetsOf(uint32_t j) const {
+    const Polygon3& p = polygon[j];
+    std::array<glm::dvec3, kTargets> out;
+    out[0] = centre[j];
+    for (int k = 0; k < 4; ++k) out[1 + k] = p.v[k % p.n] + 0.25 * (centre[j] - p.v[k % p.n]);
+    return out;
+  }
+  // Element j as makeReceiver made it when the solver took it.
+  Receiver receiverOf(uint32_t j) const {
+    Receiver r;
+    r.polygon = polygon[j];
+    r.centre = centre[j];
+    r.radius = radius[j];
+    r.normal = normalOf(j);
+    r.offset = offset[j];
+    r.area = area[j];
+    r.lanes = gaussLanes(polygon[j], ruleWeight[j]);
+    return r;
+  }
 
   // Per patch; its elements are patchElements[patchFirst[p], patchLast[p]).
   std::vector<uint32_t> patchElements, patchFirst, patchLast, patchSurface;
@@ -139,7 +172,26 @@ struct Solver::State {
   struct Replay {
     glm::dvec3 total{0}, judged{0};
   };
-  std::vector<PatchTree> trees;      // over each patch's elements, in patchElements' order
+  // Per patch, its tree over its elements (near_field.h), in patchElements' order: only a patch
+  // that shoots (or is split, or corrected) reads it, and a tree is about twice the rest of its
+  // patch's elements' state, so it is held from the first time it is needed (treeOf). Null: not
+  // made yet.
+  std::vector<std::unique_ptr<PatchTree>> trees;
+  // Patch p's tree, made now if it is not yet: from its elements in ascending order, the order
+  // setUpPatch had them in when it ordered them by the tree it dropped, which makes the same
+  // tree and the same order. Not on several threads at once.
+  const PatchTree& treeOf(uint32_t p);
+  ElementShapes shapes() const { return {polygon, centre, area}; }
+  // Scratch: the elements of the patch whose receivers are judged, as receivers in its tree's
+  // order (planPatchToReceiver's pieces).
+  std::vector<Receiver> pieces;
+  // Makes patch p's tree and pieces, which the graphics processors read as they judge its
+  // receivers.
+  void readyToJudge(uint32_t p) {
+    treeOf(p);
+    pieces.clear();
+    for (uint32_t e : elementsOf(p)) pieces.push_back(receiverOf(e));
+  }
 
   std::vector<glm::vec3> soupVertices;
   std::vector<pxpl5::Polygon> soupPolygons;
@@ -208,7 +260,7 @@ struct Solver::State {
               std::span(plans.sizes).subspan(from.plans, to.plans - from.plans)};
     }
   };
-  std::vector<KeptShot> keptShots;
+  std::vector<std::unique_ptr<KeptShot>> keptShots;  // per patch; null: none kept
   size_t keptBytes = 0;
 
   double pixelShare = 0;  // the form factor of one disk pixel, from the first frame
@@ -234,7 +286,7 @@ struct Solver::State {
   void integrateJudged(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans, ReceiverChunk& out);
   // Patch p's kept shot, or null.
   const KeptShot* keptShot(uint32_t p) const {
-    return p < keptShots.size() && pointChosen[p] && !keptShots[p].chunkStart.empty() ? &keptShots[p] : nullptr;
+    return p < keptShots.size() && pointChosen[p] ? keptShots[p].get() : nullptr;
   }
   // The record for keeping patch p's first shot, sized, when it is to be kept (its point is
   // chosen, it has none yet, the budget allows); keepShot fills and stores it.
@@ -248,7 +300,9 @@ struct Solver::State {
   std::span<const uint32_t> elementsOf(uint32_t p) const {
     return {patchElements.data() + patchFirst[p], patchLast[p] - patchFirst[p]};
   }
-  void setUpPatch(uint32_t p, uint32_t first, uint32_t last);
+  // `ordered`: p's elements in the order its tree puts them, when known (a patch of a surface no
+  // edit named, from the state before), so that no tree is built to find it.
+  void setUpPatch(uint32_t p, uint32_t first, uint32_t last, std::span<const uint32_t> ordered = {});
   const pxpl5::HemisphereFrame& frameFrom(uint32_t p, const glm::dvec3& point);
   const pxpl5::HemisphereFrame* choosePoint(uint32_t p);
   // Takes a point already checked (by an earlier state, or a correction's frame) as patch p's.
@@ -267,8 +321,9 @@ struct Solver::State {
   Sent sentBy(uint32_t p) const {
     Sent sum;
     for (uint32_t e : elementsOf(p)) {
-      sum.light += area[e] * sent[e].light;
-      sum.judged += area[e] * sent[e].judged;
+      const Sent own = sentOf(e);
+      sum.light += area[e] * own.light;
+      sum.judged += area[e] * own.judged;
     }
     return {sum.light / patchArea[p], sum.judged / patchArea[p]};
   }
@@ -277,8 +332,9 @@ struct Solver::State {
   void recordSent(uint32_t p, std::span<const glm::dvec3> light) {
     const std::span<const uint32_t> own = elementsOf(p);
     for (size_t k = 0; k < own.size(); ++k) {
-      sent[own[k]].light += light[k];
-      sent[own[k]].judged += light[k] * lastScale.judged;
+      Sent& record = sentRecord(own[k]);
+      record.light += light[k];
+      record.judged += light[k] * lastScale.judged;
     }
   }
   void shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen);
@@ -319,18 +375,28 @@ void checkSurface(const Surface& in, const std::string& where) {
 void Solver::State::build(std::span<const Surface* const> input, const State* kept) {
   size_t elementTotal = 0;
   for (size_t si = 0; si < input.size(); ++si) elementTotal += input[si] ? input[si]->elements.size() : kept->surfaces[si].elementCount;
-  receiver.reserve(elementTotal);
+  // Every array to its size at once: grown by doubling, they held up to twice the elements'
+  // state, and more while they moved.
+  surfaces.reserve(input.size());
+  surfaceNormal.reserve(input.size());
+  polygon.reserve(elementTotal);
+  ruleWeight.reserve(elementTotal);
+  for (auto* v : {&centre, &radiance, &elementUnshot}) v->reserve(elementTotal);
+  sentAt.reserve(elementTotal);
+  for (auto* v : {&radius, &area, &offset}) v->reserve(elementTotal);
+  for (auto* v : {&surfaceOf, &patchOf, &patchElements}) v->reserve(elementTotal);
   soupVertices.reserve(elementTotal * 4);
   soupPolygons.reserve(elementTotal);
 
   std::vector<std::vector<uint32_t>> members;  // per global patch, its elements
+  std::vector<std::pair<uint32_t, uint32_t>> patchBefore;  // a kept surface's patches: (now, in `kept`)
   for (size_t si = 0; si < input.size(); ++si) {
     const Surface* in = input[si];
     const std::string where = "radiosity::Solver: surface " + std::to_string(si);
     SurfaceData& s = surfaces.emplace_back();
     if (in) {
       checkSurface(*in, where);
-      s.normal = glm::normalize(in->normal);
+      surfaceNormal.push_back(glm::normalize(in->normal));
       s.reflectance = glm::clamp(in->reflectance, 0.0, 1.0);
       s.emission = in->emission;
       s.corners = in->elements;
@@ -339,12 +405,14 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       s.keys = in->keys;
     } else {
       s = kept->surfaces[si];
+      surfaceNormal.push_back(kept->surfaceNormal[si]);
     }
-    s.firstElement = static_cast<uint32_t>(receiver.size());
+    s.firstElement = static_cast<uint32_t>(polygon.size());
     s.elementCount = static_cast<uint32_t>(s.corners.size());
     s.firstPatch = static_cast<uint32_t>(members.size());
     uint32_t patches = 0;
     for (uint32_t e = 0; e < s.elementCount; ++e) {
+      Receiver r;
       if (in) {
         const std::array<uint32_t, 4>& c = in->elements[e];
         Polygon3 p;
@@ -354,25 +422,23 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
             throw std::invalid_argument(where + ", element " + std::to_string(e) + ": corner index out of range");
           p.v[k] = in->vertices[c[k]];
         }
-        receiver.push_back(makeReceiver(p, s.normal));
-        if (!(receiver.back().area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
+        r = makeReceiver(p, surfaceNormal[si]);
+        if (!(r.area > 0)) throw std::invalid_argument(where + ", element " + std::to_string(e) + ": zero area");
       } else {
-        receiver.push_back(kept->receiver[kept->surfaces[si].firstElement + e]);  // a surface no edit named
+        r = kept->receiverOf(kept->surfaces[si].firstElement + e);  // a surface no edit named
       }
-      const Receiver& r = receiver.back();
       const Polygon3& p = r.polygon;
-      const uint32_t j = static_cast<uint32_t>(receiver.size() - 1);
+      const auto j = static_cast<uint32_t>(polygon.size());
+      polygon.push_back(p);
+      ruleWeight.push_back({r.lanes.weight[0], r.lanes.weight[1], r.lanes.weight[2], r.lanes.weight[3]});
       centre.push_back(r.centre);
-      targets.push_back(r.centre);
-      for (int k = 0; k < 4; ++k) targets.push_back(p.v[k % p.n] + 0.25 * (r.centre - p.v[k % p.n]));
-      normal.push_back(s.normal);
       offset.push_back(r.offset);
       radius.push_back(r.radius);
       area.push_back(r.area);
       surfaceOf.push_back(static_cast<uint32_t>(si));
       radiance.push_back(s.emission);
       elementUnshot.push_back(s.emission);
-      sent.emplace_back();
+      sentAt.push_back(kNone);
       const uint32_t local = s.patchOfElement.empty() ? e : s.patchOfElement[e];
       patches = std::max(patches, local + 1);
       if (members.size() < s.firstPatch + patches) members.resize(s.firstPatch + patches);
@@ -382,24 +448,42 @@ void Solver::State::build(std::span<const Surface* const> input, const State* ke
       for (int k = 0; k < p.n; ++k) soupVertices.emplace_back(p.v[k]);
     }
     s.patchCount = patches;
+    if (!in)
+      for (uint32_t l = 0; l < patches; ++l) patchBefore.emplace_back(s.firstPatch + l, kept->surfaces[si].firstPatch + l);
   }
 
+  for (auto* v : {&patchFirst, &patchLast, &patchSurface}) v->reserve(members.size());
+  for (auto* v : {&patchCentre, &unshot}) v->reserve(members.size());
+  for (auto* v : {&patchArea, &patchRadius, &pointBackShare}) v->reserve(members.size());
+  pointChosen.reserve(members.size());
+  trees.reserve(members.size());
+  std::vector<uint32_t> ordered;
+  auto before = patchBefore.begin();
   for (size_t p = 0; p < members.size(); ++p) {
     if (members[p].empty())
       throw std::invalid_argument("radiosity::Solver: patch " + std::to_string(p) + " has no elements");
     const auto first = static_cast<uint32_t>(patchElements.size());
     patchElements.insert(patchElements.end(), members[p].begin(), members[p].end());
-    setUpPatch(static_cast<uint32_t>(p), first, static_cast<uint32_t>(patchElements.size()));
+    // A kept surface's patch that was not split (splitting only takes elements away) has its
+    // elements as before, ordered as before, moved by the surface's new first element.
+    ordered.clear();
+    if (before != patchBefore.end() && before->first == p) {
+      const uint32_t q = (before++)->second, si = surfaceOf[members[p].front()];
+      if (kept->elementsOf(q).size() == members[p].size())
+        for (uint32_t e : kept->elementsOf(q))
+          ordered.push_back(e - kept->surfaces[si].firstElement + surfaces[si].firstElement);
+    }
+    setUpPatch(static_cast<uint32_t>(p), first, static_cast<uint32_t>(patchElements.size()), ordered);
     stats.emittedPower += kPi * surfaces[patchSurface[p]].emission * patchArea[p];
   }
-  pixelFactor.assign(receiver.size(), 0.0);
-  replaced.assign(receiver.size(), 0);
+  pixelFactor.assign(polygon.size(), 0.0);
+  replaced.assign(polygon.size(), 0);
 }
 
 // Makes patch p (a new one when p is the patch count) of patchElements[first, last): its area,
 // the centre it shoots from, its radius, its tree, its unshot light (its elements' area-weighted
 // mean).
-void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
+void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last, std::span<const uint32_t> ordered) {
   if (p == unshot.size()) {
     for (auto* v : {&patchFirst, &patchLast, &patchSurface}) v->emplace_back();
     for (auto* v : {&patchCentre, &unshot}) v->emplace_back(0.0);
@@ -408,7 +492,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
     pointBackShare.emplace_back();
     trees.emplace_back();
   }
-  if (p < keptShots.size()) keptBytes -= keptShots[p].bytes(), keptShots[p] = {};
+  if (p < keptShots.size() && keptShots[p]) keptBytes -= keptShots[p]->bytes(), keptShots[p].reset();
   patchFirst[p] = first;
   patchLast[p] = last;
   const std::span<uint32_t> own = elementsOf(p);
@@ -419,7 +503,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   // A patch bent around a hole may have its centroid outside itself: shoot from its element
   // nearest the centroid instead.
   bool inside = false;
-  for (uint32_t e : own) inside = inside || insideConvex(receiver[e].polygon, normal[e], c);
+  for (uint32_t e : own) inside = inside || insideConvex(polygon[e], normalOf(e), c);
   if (!inside) {
     uint32_t nearest = own.front();
     for (uint32_t e : own)
@@ -428,7 +512,7 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   }
   double r = 0;
   for (uint32_t e : own)
-    for (int k = 0; k < receiver[e].polygon.n; ++k) r = std::max(r, glm::length(receiver[e].polygon.v[k] - c));
+    for (int k = 0; k < polygon[e].n; ++k) r = std::max(r, glm::length(polygon[e].v[k] - c));
   for (uint32_t e : own) patchOf[e] = p;
   patchSurface[p] = surfaceOf[own.front()];
   patchArea[p] = a;
@@ -437,8 +521,37 @@ void Solver::State::setUpPatch(uint32_t p, uint32_t first, uint32_t last) {
   unshot[p] = light / a;
   pointChosen[p] = 0;
   pointBackShare[p] = std::numeric_limits<double>::quiet_NaN();
-  const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaces[patchSurface[p]].normal));
-  trees[p] = buildPatchTree(own, receiver, axes.x, axes.y);
+  // The tree orders the patch's elements now (sums over them follow that order). Given in
+  // ascending order, as build() gives them, it can be made again alike when needed, so it is
+  // not held; a split's parts (in their parent's tree's order) keep theirs.
+  const bool ascending = std::is_sorted(own.begin(), own.end());
+  const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
+  if (!ordered.empty()) {
+    const auto treeOrder = [&] {
+      std::vector<uint32_t> order(own.begin(), own.end());
+      buildPatchTree(order, shapes(), axes.x, axes.y);
+      return order;
+    };
+    DCHECK(ascending && std::ranges::equal(treeOrder(), ordered));
+    std::copy(ordered.begin(), ordered.end(), own.begin());
+    trees[p] = nullptr;
+    return;
+  }
+  PatchTree tree = buildPatchTree(own, shapes(), axes.x, axes.y);
+  ++stats.patchTrees;
+  trees[p] = ascending ? nullptr : std::make_unique<PatchTree>(std::move(tree));
+}
+
+const PatchTree& Solver::State::treeOf(uint32_t p) {
+  if (!trees[p]) {
+    std::vector<uint32_t> given(elementsOf(p).begin(), elementsOf(p).end());
+    std::sort(given.begin(), given.end());
+    const HemisphereAxes axes = hemisphereAxes(glm::vec3(surfaceNormal[patchSurface[p]]));
+    trees[p] = std::make_unique<PatchTree>(buildPatchTree(given, shapes(), axes.x, axes.y));
+    ++stats.patchTrees;
+    DCHECK(std::equal(given.begin(), given.end(), elementsOf(p).begin()));
+  }
+  return *trees[p];
 }
 
 // ---- receivers of one shot ---------------------------------------------------------------------
@@ -453,14 +566,15 @@ double Solver::State::visibility(const pxpl5::HemisphereFrame& frame, const Hemi
     return ratio >= kUnoccludedRatio ? 1.0 : ratio;
   }
   // A receiver smaller than a pixel would read the pixel of its centroid at the other points too.
-  const size_t count = unoccluded < pixelShare ? 1 : 1 + static_cast<size_t>(receiver[j].polygon.n);
-  return itemBufferVisibility(frame, axes, eye, {targets.data() + kTargets * j, count}, j, {normal, offset, surfaceOf});
+  const size_t count = unoccluded < pixelShare ? 1 : 1 + static_cast<size_t>(polygon[j].n);
+  const std::array<glm::dvec3, kTargets> targets = targetsOf(j);
+  return itemBufferVisibility(frame, axes, eye, {targets.data(), count}, j, planes());
 }
 
 double Solver::State::backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const {
   double back = 0;
   for (const pxpl5::IdFactor& f : frame.factors)
-    if (glm::dot(normal[f.id], eye) <= offset[f.id]) back += f.factor;
+    if (glm::dot(normalOf(f.id), eye) <= offset[f.id]) back += f.factor;
   return back;
 }
 
@@ -488,7 +602,7 @@ const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
   }
   pointChosen[p] = 1;
   const uint32_t e = elementsOf(p).front();
-  const Polygon3& corners = receiver[e].polygon;
+  const Polygon3& corners = polygon[e];
   glm::dvec3 bestPoint = patchCentre[p];
   // The first point that sees no backs cannot be beaten; the frame of a point chosen last is
   // still the renderer's and serves the shot.
@@ -511,12 +625,13 @@ const pxpl5::HemisphereFrame* Solver::State::choosePoint(uint32_t p) {
 
 // The children of patch p's tree become patches: p the first, new patches the others.
 void Solver::State::split(uint32_t p) {
-  const PatchTree tree = std::move(trees[p]);
+  treeOf(p);
+  const std::unique_ptr<PatchTree> tree = std::move(trees[p]);
   const uint32_t base = patchFirst[p];
-  const PatchTree::Node& root = tree.nodes.front();
+  const PatchTree::Node& root = tree->nodes.front();
   for (uint32_t c = root.child; c < root.child + root.children; ++c) {
     const uint32_t q = c == root.child ? p : static_cast<uint32_t>(unshot.size());
-    setUpPatch(q, base + tree.nodes[c].first, base + tree.nodes[c].last);
+    setUpPatch(q, base + tree->nodes[c].first, base + tree->nodes[c].last);
   }
   ++stats.splitPatches;
 }
@@ -524,7 +639,7 @@ void Solver::State::split(uint32_t p) {
 // Patch p's hemisphere frame from `point`: every element but the patch's own.
 const pxpl5::HemisphereFrame& Solver::State::frameFrom(uint32_t p, const glm::dvec3& point) {
   ++stats.frames;
-  return renderer.render({glm::vec3(point), glm::vec3(surfaces[patchSurface[p]].normal), elementsOf(p)},
+  return renderer.render({glm::vec3(point), glm::vec3(surfaceNormal[patchSurface[p]]), elementsOf(p)},
                          {soupVertices, soupPolygons});
 }
 
@@ -538,7 +653,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
   double replacedPixels = 0;
   uint64_t nearCount = 0, smallCount = 0;
   const uint32_t si = patchSurface[p];
-  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
+  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaceNormal[si];
   const double nearLimit = settings.nearFieldRatio * patchRadius[p];
   const double smallLimit = settings.smallReceiverPixels * pixelShare;
   for (uint32_t j = begin; j < end; ++j) {
@@ -552,20 +667,21 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       // elements in front of the plane see: j's front, unless another object is in the way (j's
       // own solid cannot be when it is convex). Without this a floor patch reaching around a box
       // left the box's face 15% too dark.
-      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, receiver[j]));
-      const bool behind = glm::dot(normal[j], eye) <= offset[j];
+      const Receiver r = receiverOf(j);
+      const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, r));
+      const bool behind = glm::dot(normalOf(j), eye) <= offset[j];
       const Judged& k = out.judged.emplace_back(Judged{j, behind ? Judged::kNearBehind : Judged::kNear, v});
       if (k.integrated())
-        planPatchToReceiver(trees[p], elementsOf(p), receiver, eyeNormal, receiver[j], settings.nearFieldRatio,
+        planPatchToReceiver(*trees[p], pieces, eyeNormal, r, settings.nearFieldRatio,
                             settings.pieceRatio, settings.maxShooterSplits, out.plans);
       ++nearCount;
     } else {
       // A far receiver whose back faces the centre gets nothing but lost light whatever its
       // factor: its pixel count, right in sum over many such receivers, stands.
-      if (glm::dot(normal[j], eye) <= offset[j]) continue;
+      if (glm::dot(normalOf(j), eye) <= offset[j]) continue;
       // Lambert's factor is at most area / (pi gap^2): most receivers are ruled out as big here.
       if (area[j] >= smallLimit * kPi * gap * gap) continue;
-      const double unoccluded = pointToReceiver(eye, eyeNormal, receiver[j]);
+      const double unoccluded = pointToReceiver(eye, eyeNormal, receiverOf(j));
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
       const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded) : 0;
       out.judged.push_back({j, Judged::kSmallFront, unoccluded * v});  // its front faces the centre (above)
@@ -596,7 +712,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
                                     ReceiverChunk& out) {
   out.factors.clear();
   glm::dvec3 replacedNew{0};
-  const glm::dvec3& eyeNormal = surfaces[patchSurface[p]].normal;
+  const glm::dvec3& eyeNormal = surfaceNormal[patchSurface[p]];
   size_t plan = 0, step = 0, factor = 0;
   for (const Judged& k : judged) {
     const uint32_t j = k.element;
@@ -605,8 +721,8 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
       f.front = glm::dvec3(k.value);
     } else if (k.integrated()) {
       const NearPlanSize size = plans.sizes[plan++];
-      applyPlan(trees[p], nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
-                receiver[j], f.front, f.back);
+      applyPlan(*trees[p], nodeLight, plans.steps.subspan(step, size.steps), plans.factors.subspan(factor, size.factors), eyeNormal,
+                receiverOf(j), f.front, f.back);
       step += size.steps;
       factor += size.factors;
       if (k.kind != Judged::kNearBehind) f.front *= k.value;
@@ -620,7 +736,7 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
 }
 
 std::optional<Solver::State::KeptShot> Solver::State::shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const {
-  if (!pointChosen[p] || (p < keptShots.size() && !keptShots[p].chunkStart.empty())) return {};
+  if (!pointChosen[p] || (p < keptShots.size() && keptShots[p])) return {};
   KeptShot record;
   record.chunkStart.push_back({});
   for (const ReceiverChunk& chunk : chunks) {
@@ -654,8 +770,8 @@ void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, Ke
 
 void Solver::State::storeShot(uint32_t p, KeptShot record) {
   if (keptShots.size() <= p) keptShots.resize(unshot.size());
-  keptBytes += record.bytes() - keptShots[p].bytes();
-  keptShots[p] = std::move(record);
+  keptBytes += record.bytes() - (keptShots[p] ? keptShots[p]->bytes() : 0);
+  keptShots[p] = std::make_unique<KeptShot>(std::move(record));
 }
 
 void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
@@ -672,7 +788,7 @@ void Solver::State::shoot(uint32_t p, const pxpl5::HemisphereFrame* chosen) {
   glm::dvec3 over{0};
   if (settings.overshoot) {
     const glm::dvec3 expected = surfaces[patchSurface[p]].reflectance *
-                                gatherUnshot(seen, patchCentre[p], {normal, offset, surfaceOf}, elementUnshot);
+                                gatherUnshot(seen, patchCentre[p], planes(), elementUnshot);
     for (int c = 0; c < 3; ++c) over[c] = std::clamp(expected[c], 0.0, std::max(unshot[p][c], 0.0));
   }
   const glm::dvec3 dB = unshot[p] + over;
@@ -704,7 +820,7 @@ void Solver::State::lightPatch(uint32_t p, const glm::dvec3& dB, std::span<const
       if (dB[c] != 0) w[c] = area[own[k]] * light[k][c] / (patchArea[p] * dB[c]);
     shares.push_back(w);
   }
-  lightPatchTree(trees[p], shares, nodeLight);
+  lightPatchTree(treeOf(p), shares, nodeLight);
 }
 
 void Solver::State::receive(uint32_t j, double sourceArea, const glm::dvec3& dB, const glm::dvec3& front,
@@ -723,7 +839,7 @@ template <typename Deposit>
 glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* chosen, const Deposit& deposit,
                                      const Replay* replay) {
   const uint32_t si = patchSurface[p];
-  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaces[si].normal;
+  const glm::dvec3 eye = patchCentre[p], eyeNormal = surfaceNormal[si];
 
   // A kept shot of p stands for its frame and judgement (the same geometry, the same point).
   const KeptShot* before = chosen ? nullptr : keptShot(p);
@@ -736,8 +852,9 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(eyeNormal));
 
   // Near and small receivers get new factors, per channel (near ones weigh the shooter's
-  // elements by their unshot light), judged on the graphics processors.
-  const auto elements = static_cast<uint32_t>(receiver.size());
+  // elements by their unshot light), judged on the graphics processors (which read p's tree).
+  readyToJudge(p);
+  const auto elements = static_cast<uint32_t>(polygon.size());
   renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
     if (before)
       rejudgeReceivers(p, before->judgedOf(c), before->plansOf(c), chunks[c]);
@@ -794,7 +911,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
       pixelFactor[f.id] = 0;
       if (replaced[f.id]) continue;
       const glm::dvec3 factor = f.factor * scale;
-      if (glm::dot(normal[f.id], eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
+      if (glm::dot(normalOf(f.id), eye) > offset[f.id]) deposit(f.id, factor, glm::dvec3(0));
       else deposit(f.id, glm::dvec3(0), factor);
     }
     for (const ReceiverChunk& chunk : chunks)
@@ -957,15 +1074,17 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
   auto now = std::make_unique<State>(old.settings);
   State& n = *now;
   n.build(given, &old);
+  const uint64_t trees = n.stats.patchTrees;  // the replaced surfaces' patches'
   n.stats = old.stats;  // the ledgers go on; emission does not change
+  n.stats.patchTrees += trees;
   n.stats.editedSurfaces += changes.size();
   n.pixelShare = old.pixelShare;
 
   // Elements go on by their keys (on a surface no change named: all of them, as they were):
   // they keep their light.
   auto edit = std::make_unique<Edit>();
-  edit->elementNow.assign(old.receiver.size(), kNone);
-  std::vector<uint8_t> changedBefore(old.receiver.size(), 0), mappedNow(n.receiver.size(), 0);
+  edit->elementNow.assign(old.polygon.size(), kNone);
+  std::vector<uint8_t> changedBefore(old.polygon.size(), 0), mappedNow(n.polygon.size(), 0);
   std::vector<uint32_t> changed[2];  // elements that moved or went (before), moved or came (now)
   for (size_t si = 0; si < given.size(); ++si) {
     const State::SurfaceData &a = old.surfaces[si], &b = n.surfaces[si];
@@ -984,7 +1103,7 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
       if (found != byKey.end() && found->first == b.keyOf(k)) edit->elementNow[found->second] = b.firstElement + k;
     }
   }
-  for (uint32_t j = 0; j < old.receiver.size(); ++j) {
+  for (uint32_t j = 0; j < old.polygon.size(); ++j) {
     const uint32_t i = edit->elementNow[j];
     if (i == kNone) {
       // Gone: its unshot light leaves with it.
@@ -996,19 +1115,19 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
     mappedNow[i] = 1;
     n.radiance[i] = old.radiance[j];
     n.elementUnshot[i] = old.elementUnshot[j];
-    if (!sameCorners(old.receiver[j].polygon, n.receiver[i].polygon)) {
+    if (!sameCorners(old.polygon[j], n.polygon[i])) {
       changedBefore[j] = 1;
       changed[0].push_back(j);
       changed[1].push_back(i);
     }
   }
-  for (uint32_t i = 0; i < n.receiver.size(); ++i)
+  for (uint32_t i = 0; i < n.polygon.size(); ++i)
     if (!mappedNow[i]) {
       n.stats.removedPower -= kPi * n.elementUnshot[i] * n.area[i];  // starts at its emission
       changed[1].push_back(i);
     }
-  edit->elementBefore.assign(n.receiver.size(), kNone);
-  for (uint32_t j = 0; j < old.receiver.size(); ++j)
+  edit->elementBefore.assign(n.polygon.size(), kNone);
+  for (uint32_t j = 0; j < old.polygon.size(); ++j)
     if (edit->elementNow[j] != kNone) edit->elementBefore[edit->elementNow[j]] = j;
   // Patches split before (their centres were under a solid) are split alike now where their
   // elements are the same, so that their light is corrected part by part as it was sent.
@@ -1021,13 +1140,13 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
       bool within = true;  // the old patch's elements all in this one
       for (uint32_t j : old.elementsOf(old.patchOf[first]))
         within = within && edit->elementNow[j] != kNone && n.patchOf[edit->elementNow[j]] == q;
-      const PatchTree::Node& root = n.trees[q].nodes.front();
+      const PatchTree::Node& root = n.treeOf(q).nodes.front();
       if (!within || root.children < 2) break;
       n.split(q);
     }
   }
   n.stats.splitPatches = splits;
-  edit->changedNow.assign(n.receiver.size(), 0);
+  edit->changedNow.assign(n.polygon.size(), 0);
   for (uint32_t i : changed[1]) edit->changedNow[i] = 1;
   // Per surface and geometry, spheres around its changed elements (a few dozen in each): a
   // tighter bound on what a patch sees of them than their sum, and the window a correction looks
@@ -1077,13 +1196,13 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
   // they still form the patch that sent it (it is taken back along that patch's frame).
   for (uint32_t p = 0; p < old.unshot.size(); ++p) {
     double power = 0;
-    for (uint32_t j : old.elementsOf(p)) power += kPi * channelSum(old.sent[j].light) * old.area[j];
+    for (uint32_t j : old.elementsOf(p)) power += kPi * channelSum(old.sentOf(j).light) * old.area[j];
     if (power == 0) continue;
     const uint32_t same = edit->samePatch(old, n, p);
     bool itself = same == kNone;
     for (uint32_t j : old.elementsOf(p)) itself = itself || changedBefore[j];
     const uint32_t si = old.patchSurface[p];
-    const glm::dvec3 up = old.surfaces[si].normal, eye = old.patchCentre[p];
+    const glm::dvec3 up = old.surfaceNormal[si], eye = old.patchCentre[p];
     const double size = old.patchRadius[p];
     const double share =
         itself ? 1.0
@@ -1094,7 +1213,8 @@ void Solver::edit(std::span<const SurfaceChange> changes) {
       continue;
     }
     // It sees nothing of the change and sees what it saw: the point it chose and its frame stand.
-    for (uint32_t j : old.elementsOf(p)) n.sent[edit->elementNow[j]] = old.sent[j];
+    for (uint32_t j : old.elementsOf(p))
+      if (old.sentAt[j] != kNone) n.sentRecord(edit->elementNow[j]) = old.sentRecords[old.sentAt[j]];
     n.adoptPoint(same, old.patchCentre[p], old.patchRadius[p], old.pointBackShare[p]);
     if (old.keptShot(p)) edit->moveShot(old, n, p, same, nullptr);
   }
@@ -1140,7 +1260,7 @@ void Solver::takeBack(uint32_t p) {
   // the radiance. What fell on removed elements comes off their ledger.
   const State::Sent S = before.sentBy(p);
   before.sending.clear();
-  for (uint32_t e : before.elementsOf(p)) before.sending.push_back(before.sent[e].judged);
+  for (uint32_t e : before.elementsOf(p)) before.sending.push_back(before.sentOf(e).judged);
   before.lightPatch(p, S.judged, before.sending);
   const State::Replay replay{S.light, S.judged};
   const double area = before.patchArea[p];
@@ -1162,7 +1282,7 @@ void Solver::sendAgain(uint32_t p) {
   from.clear();
   for (uint32_t j : before.elementsOf(p)) {
     const uint32_t i = edit_->elementNow[j];
-    if (i == kNone) now.stats.removedPower += kPi * before.sent[j].light * before.area[j];
+    if (i == kNone) now.stats.removedPower += kPi * before.sentOf(j).light * before.area[j];
     else from.push_back(i);
   }
   // The frame of the last point chosen is still the renderer's: it is that patch's shot frame.
@@ -1198,7 +1318,7 @@ void Solver::sendAgain(uint32_t p) {
     glm::dvec3 dB{0};
     for (uint32_t i : now.elementsOf(q)) {
       const bool carrying = std::binary_search(from.begin(), from.end(), i);
-      dB += now.area[i] * carried.emplace_back(carrying ? before.sent[edit_->elementBefore[i]].light : glm::dvec3(0));
+      dB += now.area[i] * carried.emplace_back(carrying ? before.sentOf(edit_->elementBefore[i]).light : glm::dvec3(0));
     }
     dB /= now.patchArea[q];
     now.lightPatch(q, dB, carried);
@@ -1241,7 +1361,7 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   const uint32_t q = w.now = unmovedPatch(old, now, p);
   if (q == kNone || !old.pointChosen[p]) return;
   const uint32_t si = old.patchSurface[p];
-  const glm::dvec3 eye = old.patchCentre[p], up = old.surfaces[si].normal;
+  const glm::dvec3 eye = old.patchCentre[p], up = old.surfaceNormal[si];
   const HemisphereAxes axes = hemisphereAxes(glm::vec3(up));
   const int resolution = old.settings.resolution;
 
@@ -1256,7 +1376,7 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   const double smallLimit = old.settings.smallReceiverPixels * old.pixelShare;
   const auto whole = [&](uint32_t j) {
     const double gap = glm::length(old.centre[j] - eye) - old.radius[j];
-    return gap < nearLimit || (glm::dot(old.normal[j], eye) > old.offset[j] && old.area[j] < smallLimit * kPi * gap * gap);
+    return gap < nearLimit || (glm::dot(old.normalOf(j), eye) > old.offset[j] && old.area[j] < smallLimit * kPi * gap * gap);
   };
   cull.cull(old.spheres(), axes, eye, resolution, si, changedWindow);
   // First both frames in the changed window alone, to find what differs there. The elements
@@ -1297,7 +1417,8 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
     const double u = (x + 0.5) * 2 / resolution - 1, v = (y + 0.5) * 2 / resolution - 1;
     const glm::dvec3 direction = axes.x * u + axes.y * v + axes.z * std::sqrt(std::max(0.0, 1 - u * u - v * v));
     const auto distance = [&](uint32_t j) {
-      return std::abs((s.offset[j] - glm::dot(s.normal[j], eye)) / glm::dot(s.normal[j], direction));
+      const glm::dvec3& normal = s.normalOf(j);
+      return std::abs((s.offset[j] - glm::dot(normal, eye)) / glm::dot(normal, direction));
     };
     return distance(over) < distance(behind) ? over : behind;
   };
@@ -1316,7 +1437,7 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
   // Judged again: the changed elements, and the others whose pixels or targets differ.
   const size_t changedWidth = static_cast<size_t>(changedWindow.x1 - changedWindow.x0);
   w.differs.assign(static_cast<size_t>(pixelsOf(changedWindow)), 0);
-  if (w.marked.size() < old.receiver.size()) w.marked.resize(old.receiver.size(), 0);
+  if (w.marked.size() < old.polygon.size()) w.marked.resize(old.polygon.size(), 0);
   const uint32_t mark = ++w.correction;
   for (int y = changedWindow.y0; y < changedWindow.y1; ++y)
     for (int x = changedWindow.x0; x < changedWindow.x1; ++x) {
@@ -1339,9 +1460,10 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
       // Only near and small receivers read items at their targets; the others' factors are
       // counts, unchanged when none of their pixels is.
       if (!whole(j)) continue;
+      const std::array<glm::dvec3, State::kTargets> targets = old.targetsOf(j);
       for (size_t k = 0; k < State::kTargets && w.marked[j] != mark; ++k) {
         int x = 0, y = 0;
-        if (!targetPixel(axes, eye, resolution, old.targets[State::kTargets * j + k], x, y)) continue;
+        if (!targetPixel(axes, eye, resolution, targets[k], x, y)) continue;
         if (x < changedWindow.x0 || x >= changedWindow.x1 || y < changedWindow.y0 || y >= changedWindow.y1) continue;
         if (w.differs[static_cast<size_t>(y - changedWindow.y0) * changedWidth + static_cast<size_t>(x - changedWindow.x0)])
           w.marked[j] = mark;
@@ -1385,8 +1507,8 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
     }
   for (int side = 0; side < 2; ++side) {
     std::vector<uint32_t>& count = w.pixelCount;
-    if (count.size() < std::max(old.receiver.size(), now.receiver.size()))
-      count.resize(std::max(old.receiver.size(), now.receiver.size()), 0);
+    if (count.size() < std::max(old.polygon.size(), now.polygon.size()))
+      count.resize(std::max(old.polygon.size(), now.polygon.size()), 0);
     w.counted.clear();
     for (int y = cull.window.y0; y < cull.window.y1; ++y)
       for (int x = cull.window.x0; x < cull.window.x1; ++x) {
@@ -1410,9 +1532,9 @@ void Solver::Edit::findWindow(const State& now, uint32_t p, Window& w) const {
 }
 
 void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, const Window* w) {
-  State::KeptShot shot = std::move(old.keptShots[p]);
+  State::KeptShot shot = std::move(*old.keptShots[p]);
   old.keptBytes -= shot.bytes();
-  old.keptShots[p] = {};
+  old.keptShots[p].reset();
 
   // Pixel factors of the elements now. The window's frames are drawn their own way
   // (windowed_correction.h), which may give an element a pixel more or less than a whole frame
@@ -1446,7 +1568,7 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
 
   // The receivers judged before, but those the window judged again, chunk by chunk; then those,
   // judged on its frame now (with the pixel factors now), in the last chunk.
-  rejudged.assign(old.receiver.size(), 0);
+  rejudged.assign(old.polygon.size(), 0);
   if (w)
     for (uint32_t j : w->judged[0]) rejudged[j] = 1;
   State::KeptShot::ChunkStart to{}, from{};
@@ -1475,7 +1597,8 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
   shot.plans.factors.resize(to.factors);
   if (w) {
     for (const pxpl5::IdFactor& f : shot.factors) now.pixelFactor[f.id] = f.factor;
-    const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaces[now.patchSurface[q]].normal));
+    const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaceNormal[now.patchSurface[q]]));
+    now.readyToJudge(q);
     for (uint32_t i : w->judged[1]) {
       now.judgeReceivers(q, w->frame[1], axes, i, i + 1, judging);
       shot.judged.insert(shot.judged.end(), judging.judged.begin(), judging.judged.end());
@@ -1618,7 +1741,7 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
   std::vector<double> weight(s.vertexCount, 0.0);
   for (uint32_t e = 0; e < s.elementCount; ++e) {
     const uint32_t j = s.firstElement + e;
-    for (int k = 0; k < st.receiver[j].polygon.n; ++k) {
+    for (int k = 0; k < st.polygon[j].n; ++k) {
       sum[s.corners[e][k]] += st.area[j] * st.radiance[j];
       weight[s.corners[e][k]] += st.area[j];
     }
@@ -1631,7 +1754,7 @@ std::vector<glm::dvec3> Solver::vertexRadiance(uint32_t surface, const glm::dvec
 
 const Stats& Solver::stats() const { return state_->stats; }
 size_t Solver::surfaceCount() const { return state_->surfaces.size(); }
-size_t Solver::elementCount() const { return state_->receiver.size(); }
+size_t Solver::elementCount() const { return state_->polygon.size(); }
 size_t Solver::patchCount() const { return state_->unshot.size(); }
 
 }  // namespace radiosity

@@ -333,6 +333,26 @@ TEST(RadiosityEdit, SurfacesNotNamedKeepEverything) {
   expectTheSameLight(some, all);
 }
 
+// An edit sets up the patches of the surfaces it replaces and takes the others' as they were, in
+// the order their trees put their elements: it builds the near-field trees of the board's
+// patches, not the room's (an edit's cost follows what changed). Patches build theirs when they
+// shoot or are corrected, later.
+TEST(RadiosityEdit, AnEditBuildsTreesForTheSurfacesItReplacesOnly) {
+  const auto grouped = [](std::vector<Surface> scene) {
+    for (Surface& s : scene) s.patchOfElement = groupIntoPatches(s, 0.25);
+    return scene;
+  };
+  Solver solver(grouped(roomWithBoard(0, 0.4)));
+  solver.solve(1e-2);
+  const std::vector<Surface> moved = grouped(roomWithBoard(0.15, 0.35));
+  uint64_t boardPatches = 0;
+  for (uint32_t s : kBoard) boardPatches += *std::max_element(moved[s].patchOfElement.begin(), moved[s].patchOfElement.end()) + 1;
+  const uint64_t before = solver.stats().patchTrees;
+  solver.edit(changesOf(moved, kBoard));
+  EXPECT_EQ(solver.stats().patchTrees - before, boardPatches);
+  EXPECT_GT(solver.patchCount(), 4 * boardPatches);
+}
+
 TEST(RadiosityEdit, NoChangeNoCorrectionsAndAWrongEditIsRefused) {
   const std::vector<Surface> scene = roomWithBoard(0, 0.4);
   Solver solver(scene);

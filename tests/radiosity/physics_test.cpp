@@ -212,6 +212,7 @@ struct FloorPatch {
   std::vector<Receiver> elements;
   std::vector<uint32_t> order;  // the tree's
   PatchTree tree;
+  std::vector<Receiver> pieces;  // the elements in the tree's order
 
   FloorPatch() {
     for (const auto& c : floor.elements) {
@@ -222,7 +223,12 @@ struct FloorPatch {
     order.resize(elements.size());
     for (uint32_t e = 0; e < order.size(); ++e) order[e] = e;
     const HemisphereAxes axes = hemisphereAxes(glm::vec3(floor.normal));
-    tree = buildPatchTree(order, elements, axes.x, axes.y);
+    std::vector<Polygon3> polygons;
+    std::vector<glm::dvec3> centres;
+    std::vector<double> areas;
+    for (const Receiver& e : elements) polygons.push_back(e.polygon), centres.push_back(e.centre), areas.push_back(e.area);
+    tree = buildPatchTree(order, {polygons, centres, areas}, axes.x, axes.y);
+    for (uint32_t e : order) pieces.push_back(elements[e]);
   }
 
   // Per element in the tree's order, its share of the light: `light` at its centre times its
@@ -290,7 +296,7 @@ TEST(RadiosityPhysics, PatchTreeAgreesWithElementByElement) {
   double worst = 0;
   for (const Receiver& r : FloorPatch::receivers()) {
     glm::dvec3 front{0}, back{0}, referenceFront{0}, referenceBack{0};
-    patchToReceiver(patch.tree, light, patch.order, patch.elements, patch.floor.normal, r, 8, 3, 3, front, back);
+    patchToReceiver(patch.tree, light, patch.pieces, patch.floor.normal, r, 8, 3, 3, front, back);
     patch.elementByElement(shares, r, referenceFront, referenceBack);
     for (int c = 0; c < 3; ++c) ASSERT_GT(referenceFront[c] + referenceBack[c], 0);
     worst = std::max(worst, worstDifference(front, back, referenceFront, referenceBack));
@@ -309,7 +315,7 @@ TEST(RadiosityPhysics, NearFieldPlansServeAnyLight) {
   const std::vector<Receiver> receivers = FloorPatch::receivers();
   NearPlans plans;
   for (const Receiver& r : receivers)
-    planPatchToReceiver(patch.tree, patch.order, patch.elements, patch.floor.normal, r, 8, 3, 3, plans);
+    planPatchToReceiver(patch.tree, patch.pieces, patch.floor.normal, r, 8, 3, 3, plans);
   ASSERT_EQ(plans.sizes.size(), receivers.size());
 
   const std::vector<std::vector<glm::dvec3>> lights = {
@@ -331,7 +337,7 @@ TEST(RadiosityPhysics, NearFieldPlansServeAnyLight) {
                 patch.floor.normal, receivers[k], front, back);
       step += size.steps;
       factor += size.factors;
-      patchToReceiver(patch.tree, light, patch.order, patch.elements, patch.floor.normal, receivers[k], 8, 3, 3, freshFront,
+      patchToReceiver(patch.tree, light, patch.pieces, patch.floor.normal, receivers[k], 8, 3, 3, freshFront,
                       freshBack);
       EXPECT_EQ(front, freshFront);
       EXPECT_EQ(back, freshBack);
@@ -364,9 +370,9 @@ TEST(RadiosityPhysics, NearFieldIsLinearInTheLight) {
   double worst = 0;
   for (const Receiver& r : FloorPatch::receivers()) {
     glm::dvec3 front{0}, back{0}, sumFront{0}, sumBack{0};
-    patchToReceiver(patch.tree, lightA, patch.order, patch.elements, patch.floor.normal, r, 8, 3, 3, front, back);
-    patchToReceiver(patch.tree, lightB, patch.order, patch.elements, patch.floor.normal, r, 8, 3, 3, front, back);
-    patchToReceiver(patch.tree, lightSum, patch.order, patch.elements, patch.floor.normal, r, 8, 3, 3, sumFront, sumBack);
+    patchToReceiver(patch.tree, lightA, patch.pieces, patch.floor.normal, r, 8, 3, 3, front, back);
+    patchToReceiver(patch.tree, lightB, patch.pieces, patch.floor.normal, r, 8, 3, 3, front, back);
+    patchToReceiver(patch.tree, lightSum, patch.pieces, patch.floor.normal, r, 8, 3, 3, sumFront, sumBack);
     for (int c = 0; c < 3; ++c)
       worst = std::max(worst, std::abs(front[c] + back[c] - sumFront[c] - sumBack[c]) / (std::abs(sumFront[c]) + std::abs(sumBack[c])));
   }

@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <malloc.h>
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -208,6 +210,47 @@ TEST(RadiositySolver, KeptShotsGiveTheSameLight) {
       EXPECT_EQ(a.elementRadiance(s)[e], b.elementRadiance(s)[e]);
       EXPECT_EQ(a.elementRadiance(s)[e], c.elementRadiance(s)[e]);
     }
+}
+
+// The heap a solver holds per element (issue 20: the White Room's 2.6 million elements must fit
+// in 2.5 GB with the scene, its meshes and the display): constructed, and after its first shot.
+// Measured between a box of N elements and one of 4 N, which cancels what does not grow with the
+// elements (the emulated Pixel-Planes 5's memories). Constructed, it held about 1.4 KB an
+// element: a Receiver of 448 bytes, every patch's tree (about 540 bytes an element) whether it
+// shoots or not, five item-buffer targets of 120 bytes, arrays grown by doubling. A shot adds its
+// scratch: in this box every element is a small receiver, judged and kept with the shot.
+TEST(RadiositySolver, HoldsUnderHalfAKilobyteAnElement) {
+  struct Held {
+    size_t elements = 0;
+    double constructed = 0, shot = 0;
+  };
+  const auto heldBy = [](double patchSize) {
+    std::vector<Surface> box = closedBox(1, patchSize, glm::dvec3(0.5), glm::dvec3(0));
+    box[1].emission = glm::dvec3(1);  // the ceiling
+    Held held;
+    for (Surface& s : box) s.patchOfElement = groupIntoPatches(s, 4 * patchSize), held.elements += s.elements.size();
+    const auto heap = [] {
+      const struct mallinfo2 m = mallinfo2();
+      return static_cast<double>(m.uordblks + m.hblkhd);
+    };
+    const double before = heap();
+    Solver solver(box);
+    held.constructed = heap() - before;
+    EXPECT_TRUE(solver.step());
+    held.shot = heap() - before;
+    return held;
+  };
+  const Held small = heldBy(1.0 / 64), large = heldBy(1.0 / 128);
+  // The sanitizers' allocators keep their own counts: mallinfo2 sees nothing.
+  if (large.constructed <= 0) GTEST_SKIP() << "mallinfo2 counts no heap under this allocator";
+  ASSERT_GT(large.elements, 3 * small.elements);
+  const auto perElement = [&](double Held::*bytes) {
+    return (large.*bytes - small.*bytes) / static_cast<double>(large.elements - small.elements);
+  };
+  std::printf("solver: %.0f bytes an element constructed, %.0f after a shot (%zu and %zu elements)\n",
+              perElement(&Held::constructed), perElement(&Held::shot), small.elements, large.elements);
+  EXPECT_LT(perElement(&Held::constructed), 512);
+  EXPECT_LT(perElement(&Held::shot), 768);
 }
 
 TEST(RadiositySolver, RefusesBadInput) {
