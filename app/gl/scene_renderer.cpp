@@ -101,6 +101,7 @@ void SceneRenderer::fill(const engine::DisplayMesh& mesh, Chunk& chunk) {
   chunk.low = glm::vec3{INFINITY}, chunk.high = glm::vec3{-INFINITY};
   for (const glm::vec3& p : vectors_) chunk.low = glm::min(chunk.low, p), chunk.high = glm::max(chunk.high, p);
   uploadBuffer(chunk.positions, GL_ARRAY_BUFFER, vectors_);
+  uploadBuffer(chunk.radiance, GL_ARRAY_BUFFER, nullptr, vectors_.size() * sizeof(glm::vec3));
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   fillRadiance(mesh, chunk);
 
@@ -114,8 +115,10 @@ void SceneRenderer::fill(const engine::DisplayMesh& mesh, Chunk& chunk) {
 }
 
 void SceneRenderer::fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk) {
+  // Into the storage fill() made: a new store every snapshot would cost llvmpipe fresh pages.
   gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
-  uploadBuffer(chunk.radiance, GL_ARRAY_BUFFER, vectors_);
+  glBindBuffer(GL_ARRAY_BUFFER, chunk.radiance);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vectors_.size() * sizeof(glm::vec3)), vectors_.data());
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   chunk.radianceStale = false;
   bool changed = false;

@@ -40,23 +40,6 @@ std::vector<uint32_t> polygonVertices(const mesher::PolygonWithHoles& polygon, c
   return vertex;
 }
 
-// The polygon's triangles over its own points, when they tile the `area` its elements tile; else
-// none.
-std::vector<uint32_t> outlineOf(const mesher::PolygonWithHoles& polygon, const mesher::Mesh& mesh, double area) {
-  const std::vector<uint32_t> vertex = polygonVertices(polygon, mesh);
-  if (vertex.empty()) return {};
-  std::vector<uint32_t> outline;
-  double covered = 0;
-  for (const std::array<uint32_t, 3>& t : mesher::triangulate(polygon)) {
-    if (std::max({t[0], t[1], t[2]}) >= vertex.size()) return {};
-    const uint32_t a = vertex[t[0]], b = vertex[t[1]], c = vertex[t[2]];
-    covered += 0.5 * mesher::orient2(mesh.vertices[a], mesh.vertices[b], mesh.vertices[c]);
-    outline.insert(outline.end(), {a, b, c});
-  }
-  if (!(std::abs(covered - area) <= 1e-9 * area)) return {};
-  return outline;
-}
-
 glm::dvec3 middleOfBounds(const MeshedScene& meshed) {
   bool first = true;
   glm::dvec3 low{0}, high{0};
@@ -71,6 +54,29 @@ glm::dvec3 middleOfBounds(const MeshedScene& meshed) {
 
 }  // namespace
 
+std::vector<uint32_t> surfaceOutline(const SurfaceMesh& meshed) {
+  const mesher::PolygonWithHoles& polygon = meshed.polygon;
+  const mesher::Mesh& mesh = meshed.mesh;
+  double area = 0;
+  for (const auto& element : mesh.elements) {
+    const size_t n = element[3] == mesher::Mesh::kNone ? 3 : 4;
+    for (size_t k = 1; k + 1 < n; ++k) area += 0.5 * mesher::orient2(mesh.vertices[element[0]], mesh.vertices[element[k]], mesh.vertices[element[k + 1]]);
+  }
+  const std::vector<uint32_t> vertex = polygonVertices(polygon, mesh);
+  if (vertex.empty()) return {};
+  std::vector<uint32_t> outline;
+  double covered = 0;
+  for (const std::array<uint32_t, 3>& t : mesher::triangulate(polygon)) {
+    if (std::max({t[0], t[1], t[2]}) >= vertex.size()) return {};
+    const uint32_t a = vertex[t[0]], b = vertex[t[1]], c = vertex[t[2]];
+    covered += 0.5 * mesher::orient2(mesh.vertices[a], mesh.vertices[b], mesh.vertices[c]);
+    outline.insert(outline.end(), {a, b, c});
+  }
+  if (!(std::abs(covered - area) <= 1e-9 * area)) return {};
+  return outline;
+}
+
+
 size_t DisplayMesh::triangleCount() const {
   size_t count = 0;
   for (const SurfaceDisplay& s : surfaces) count += s.triangles.size() / 3;
@@ -79,7 +85,8 @@ size_t DisplayMesh::triangleCount() const {
 
 glm::dmat4 displayFromWorld(const DisplayMesh& mesh) { return glm::translate(glm::dmat4{1.0}, -mesh.origin); }
 
-SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const glm::dmat4& displayFromWorld) {
+SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const glm::dmat4& displayFromWorld,
+                              std::vector<uint32_t> outline) {
   const mesher::Mesh& patches = meshed.mesh;
   SurfaceDisplay display;
   display.object = object;
@@ -93,13 +100,11 @@ SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const 
   std::vector<std::pair<uint32_t, uint32_t>> edges;
   edges.reserve(4 * patches.elements.size());
   display.triangles.reserve(6 * patches.elements.size());
-  double surfaceArea = 0;
   for (const auto& element : patches.elements) {
     const size_t n = element[3] == mesher::Mesh::kNone ? 3 : 4;
     double area = 0;
     for (size_t k = 0; k < n; ++k)
       area += 0.5 * mesher::orient2(patches.vertices[element[0]], patches.vertices[element[k]], patches.vertices[element[(k + 1) % n]]);
-    surfaceArea += area;
     for (size_t k = 0; k < n; ++k) {
       display.area[element[k]] += static_cast<float>(area / static_cast<double>(n));
       edges.push_back(std::minmax(element[k], element[(k + 1) % n]));
@@ -113,7 +118,7 @@ SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const 
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   display.edges.reserve(2 * edges.size());
   for (const auto& [a, b] : edges) display.edges.insert(display.edges.end(), {a, b});
-  display.outline = outlineOf(meshed.polygon, patches, surfaceArea);
+  display.outline = std::move(outline);
   if (!display.positions.empty()) {
     glm::vec3 low = display.positions.front(), high = low;
     for (const glm::vec3& p : display.positions) low = glm::min(low, p), high = glm::max(high, p);
@@ -129,7 +134,7 @@ DisplayMesh displayMesh(const Scene& scene, const MeshedScene& meshed, std::opti
   const glm::dmat4 fromWorld = displayFromWorld(mesh);
   mesh.surfaces.reserve(meshed.surfaces.size());
   for (size_t s = 0; s < meshed.surfaces.size(); ++s) {
-    mesh.surfaces.push_back(surfaceDisplay(meshed.surfaces[s], scene.surfaces[s].object, fromWorld));
+    mesh.surfaces.push_back(surfaceDisplay(meshed.surfaces[s], scene.surfaces[s].object, fromWorld, surfaceOutline(meshed.surfaces[s])));
     mesh.elements += mesh.surfaces.back().elements;
     mesh.quads += mesh.surfaces.back().quads;
     mesh.vertices += mesh.surfaces.back().positions.size();

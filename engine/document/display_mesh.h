@@ -55,10 +55,16 @@ DisplayMesh displayMesh(const Scene& scene, const MeshedScene& meshed, std::opti
 // Display coordinates from world coordinates for `mesh` as built: less its origin.
 glm::dmat4 displayFromWorld(const DisplayMesh& mesh);
 
-// One surface's display from its mesh, its vertices put through `displayFromWorld` (the mesh's
-// own, or another frame's: an object shown through a transform of its own), radiance left 0.
-// O(the surface's mesh).
-SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const glm::dmat4& displayFromWorld);
+// The outline (SurfaceDisplay::outline) of a surface's mesh: its polygon's triangles over its
+// own points, or none when they do not tile what the elements tile. Made where the mesh is made
+// (the document's thread, SurfaceUpdate::outline), not on the thread that draws.
+std::vector<uint32_t> surfaceOutline(const SurfaceMesh& meshed);
+
+// One surface's display from its mesh and outline (surfaceOutline), its vertices put through
+// `displayFromWorld` (the mesh's own, or another frame's: an object shown through a transform of
+// its own), radiance left 0. O(the surface's mesh).
+SurfaceDisplay surfaceDisplay(const SurfaceMesh& meshed, uint32_t object, const glm::dmat4& displayFromWorld,
+                              std::vector<uint32_t> outline);
 
 // Puts `display` in the place of surface `surface` (its vertex count may differ), keeping the
 // mesh's counts.

@@ -1,5 +1,6 @@
 #include "engine/document/lit_scene.h"
 
+#include "engine/document/display_mesh.h"
 
 #include <glm/common.hpp>
 
@@ -85,7 +86,10 @@ std::vector<SurfaceUpdate> LitScene::takeUpdates() {
   updates.reserve(changed_.size());
   const Scene& scene = editor_.scene();
   for (uint32_t s : changed_) {
-    updates.push_back({s, meshed().surfaces[s], poseOf(scene.objects[scene.surfaces[s].object]), isChanged_[s] == 2});
+    const bool meshChanged = isChanged_[s] == 2;
+    const SurfaceMesh& mesh = meshed().surfaces[s];
+    updates.push_back({s, mesh, poseOf(scene.objects[scene.surfaces[s].object]), meshChanged,
+                       meshChanged ? surfaceOutline(mesh) : std::vector<uint32_t>{}});
     isChanged_[s] = 0;
   }
   changed_.clear();

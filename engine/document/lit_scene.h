@@ -55,6 +55,9 @@ struct SurfaceUpdate {
   // False when the surface only moved along with its object, its mesh the one it was loaded with:
   // where its object stood when loaded, nothing of it changed.
   bool meshChanged = true;
+  // The mesh's outline for the display (surfaceOutline), made here rather than on the thread that
+  // draws; empty when the mesh did not change.
+  std::vector<uint32_t> outline;
 };
 
 struct LitSceneSettings {

@@ -26,7 +26,7 @@ SceneView::Taken SceneView::take(const LightingUpdate& update) {
     // Back to where the object stood when loaded: the object's transform shows it where it is.
     const uint32_t object = scene().surfaces[u.surface].object;
     const RigidMotion toLoaded(scene().objects[object], u.pose, poses_.loadedPose(object));
-    replaceSurface(display_, u.surface, surfaceDisplay(u.mesh, object, displayFromWorld(display_) * toLoaded.matrix()));
+    replaceSurface(display_, u.surface, surfaceDisplay(u.mesh, object, displayFromWorld(display_) * toLoaded.matrix(), u.outline));
     taken.surfaces.push_back(u.surface);
   }
   for (const PoseRefusal& r : update.refusals) {

@@ -163,7 +163,7 @@ TEST(SceneRenderer, UpdatingTheChangedSurfacesDrawsWhatUploadingAnewDraws) {
   std::vector<uint32_t> changed;
   for (const engine::EditedSurface& e : editor.takeEdited()) {
     const uint32_t object = editor.scene().surfaces[e.surface].object;
-    engine::replaceSurface(mesh, e.surface, engine::surfaceDisplay(editor.meshed().surfaces[e.surface], object, engine::displayFromWorld(mesh)));
+    engine::replaceSurface(mesh, e.surface, engine::surfaceDisplay(editor.meshed().surfaces[e.surface], object, engine::displayFromWorld(mesh), engine::surfaceOutline(editor.meshed().surfaces[e.surface])));
     changed.push_back(e.surface);
   }
   engine::shadeWithAmbient(editor.scene(), mesh);

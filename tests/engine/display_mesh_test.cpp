@@ -113,7 +113,7 @@ TEST(DisplayMesh, TheOutlineFollowsFootprintsMovedByHoleInsertion) {
     if (editor.scene().surfaces[s].object == box) continue;
     const SurfaceMesh& mesh = editor.meshed().surfaces[s];
     ASSERT_NE(mesh.mesh.vertices[mesh.polygon.outer.size()], mesh.polygon.holes.back().front());  // not in triangulate's order
-    const SurfaceDisplay display = surfaceDisplay(mesh, 0, glm::dmat4{1});
+    const SurfaceDisplay display = surfaceDisplay(mesh, 0, glm::dmat4{1}, surfaceOutline(mesh));
     ASSERT_FALSE(display.outline.empty());
     double area = 0;
     for (size_t t = 0; t < display.outline.size(); t += 3) {
@@ -245,7 +245,7 @@ TEST(DisplayMesh, FollowingMovesSurfaceBySurfaceGivesTheDisplayMadeAnew) {
     std::vector<uint32_t> changed;
     for (const EditedSurface& e : editor.takeEdited()) {
       const uint32_t owner = editor.scene().surfaces[e.surface].object;
-      replaceSurface(mesh, e.surface, surfaceDisplay(editor.meshed().surfaces[e.surface], owner, displayFromWorld(mesh)));
+      replaceSurface(mesh, e.surface, surfaceDisplay(editor.meshed().surfaces[e.surface], owner, displayFromWorld(mesh), surfaceOutline(editor.meshed().surfaces[e.surface])));
       changed.push_back(e.surface);
     }
     expectSameGeometry(mesh, displayMesh(editor.scene(), editor.meshed(), mesh.origin));

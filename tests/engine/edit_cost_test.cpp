@@ -92,7 +92,8 @@ TEST(EditCost, AMoveOnAMillionElementsTouchesOnlyTheBoxAndItsTile) {
   // The view shows the move, and takes the document's meshes of just those surfaces.
   ASSERT_TRUE(view.setPose(box, pose));
   std::vector<SurfaceUpdate> updates;
-  for (uint32_t s : expected) updates.push_back({s, editor.meshed().surfaces[s], pose, s == tileIndex});
+  for (uint32_t s : expected)
+    updates.push_back({s, editor.meshed().surfaces[s], pose, s == tileIndex, surfaceOutline(editor.meshed().surfaces[s])});
   EXPECT_EQ(view.take({nullptr, updates, {}}).surfaces, std::vector<uint32_t>{tileIndex});  // the box moved along
   EXPECT_EQ(view.display().elements, elements - meshed.surfaces[tileIndex].mesh.elements.size() +
                                          editor.meshed().surfaces[tileIndex].mesh.elements.size());
