@@ -55,18 +55,16 @@ void placeholderDisplay(benchmark::State& state) {
 }
 BENCHMARK(placeholderDisplay)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
-// One frame as `walkrad render` draws it (context and upload done once), read back to memory.
-void headlessFrame(benchmark::State& state) {
-  const char* name = kScenes[state.range(0)];
-  const int width = 640, height = 480;
-  const engine::Scene scene = engine::parseScene(assetText(name), name);
-  engine::DisplayMesh mesh = engine::displayMesh(scene, engine::meshScene(scene));
-  engine::shadeWithAmbient(scene, mesh);
-  const app::OsmesaContext context(width, height);
-  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&app::OsmesaContext::procAddress)))
-    throw std::runtime_error("no GL");
-  app::SceneRenderer renderer;
-  renderer.upload(mesh);
+// An OSMesa context with its GL functions loaded.
+struct Headless {
+  app::OsmesaContext context;
+  Headless(int width, int height) : context(width, height) {
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&app::OsmesaContext::procAddress))) throw std::runtime_error("no GL");
+  }
+};
+
+// A width x height frame of `mesh` from the camera `scene` opens with, exposed automatically.
+app::FrameSettings openingFrame(const engine::Scene& scene, const engine::DisplayMesh& mesh, int width, int height) {
   engine::ViewCamera camera;
   engine::chooseCamera(scene, "", camera);
   app::FrameSettings frame;
@@ -74,6 +72,20 @@ void headlessFrame(benchmark::State& state) {
   frame.width = width;
   frame.height = height;
   frame.exposure = static_cast<float>(engine::autoExposure(mesh));
+  return frame;
+}
+
+// One frame as `walkrad render` draws it (context and upload done once), read back to memory.
+void headlessFrame(benchmark::State& state) {
+  const char* name = kScenes[state.range(0)];
+  const int width = 640, height = 480;
+  const engine::Scene scene = engine::parseScene(assetText(name), name);
+  engine::DisplayMesh mesh = engine::displayMesh(scene, engine::meshScene(scene));
+  engine::shadeWithAmbient(scene, mesh);
+  const Headless headless(width, height);
+  app::SceneRenderer renderer;
+  renderer.upload(mesh);
+  app::FrameSettings frame = openingFrame(scene, mesh, width, height);
   frame.wireframe = state.range(1) != 0;
   for (auto _ : state) {
     renderer.draw(mesh, frame);
@@ -106,18 +118,10 @@ void modelFrame(benchmark::State& state) {
   lit.solve(0.01, model.shots);
   engine::DisplayMesh mesh = engine::displayMesh(scene, lit.meshed());
   engine::setRadiance(mesh, lit.solver());
-  const app::OsmesaContext context(width, height);
-  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(&app::OsmesaContext::procAddress)))
-    throw std::runtime_error("no GL");
+  const Headless headless(width, height);
   app::SceneRenderer renderer;
   renderer.upload(mesh);
-  engine::ViewCamera camera;
-  engine::chooseCamera(scene, "", camera);
-  app::FrameSettings frame;
-  frame.clipFromDisplay = engine::clipFromDisplay(camera, static_cast<double>(width) / height, scene, mesh.origin);
-  frame.width = width;
-  frame.height = height;
-  frame.exposure = static_cast<float>(engine::autoExposure(mesh));
+  app::FrameSettings frame = openingFrame(scene, mesh, width, height);
   frame.levelOfDetail = state.range(1) != 0;
   for (auto _ : state) {
     if (state.range(2) != 0) renderer.updateRadiance(mesh);
