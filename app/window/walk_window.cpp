@@ -251,6 +251,11 @@ std::optional<engine::OpenedScene> walkScene(GLFWwindow* window, const ViewOptio
     const double frameStart = glfwGetTime();
     g_presses.clear();
     glfwPollEvents();
+    // The panel's frame first, so that whether it has the mouse or keys (WantCapture...) is
+    // judged where the pointer is now, not where it was a frame ago.
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
     readInput(window, session, mouse, input);
     const double now = glfwGetTime();
     input.seconds = now - lastTime;
@@ -267,9 +272,6 @@ std::optional<engine::OpenedScene> walkScene(GLFWwindow* window, const ViewOptio
       panel.autoExposureRequested = false;
     }
 
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
     panel.chunksDrawn = renderer.lastFrame().chunksDrawn;
     panel.chunksCulled = renderer.lastFrame().chunksCulled;
     panel.trianglesDrawn = renderer.lastFrame().triangles;
