@@ -8,12 +8,6 @@
 
 namespace app {
 
-namespace {
-
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
-}  // namespace
-
 int depthBand(float nearestDepth) {
   if (!(nearestDepth > 0)) return kNearBand;
   return static_cast<int>(std::floor(std::log2(nearestDepth)));
@@ -39,7 +33,7 @@ bool evenlyLit(std::span<const glm::vec3> radiance, bool wasEven, const DetailSe
   if (radiance.empty()) return true;
   float low = INFINITY, high = -INFINITY, sum = 0;
   for (const glm::vec3& c : radiance) {
-    const float l = luminance(c);
+    const float l = engine::luminance(c);
     low = std::min(low, l), high = std::max(high, l), sum += l;
   }
   const float mean = sum / static_cast<float>(radiance.size());

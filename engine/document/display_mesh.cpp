@@ -18,8 +18,6 @@ namespace engine {
 
 namespace {
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 // Per point of the polygon (outer ring, then holes), its vertex in the mesh: the mesh's first
 // vertices, unless holes were inserted later (their points come after the vertices made before);
 // then found by their exact coordinates, which the mesher keeps. Empty when one is missing.
@@ -179,6 +177,8 @@ glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {
   }
   return ambient;
 }
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 double autoExposure(const DisplayMesh& mesh, double key) {
   double logSum = 0, areaSum = 0;

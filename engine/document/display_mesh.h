@@ -81,6 +81,9 @@ void setRadiance(DisplayMesh& mesh, const radiosity::Solver& solver);
 // radiance (the picture before any light is shot); returns that ambient radiance.
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh);
 
+// The luminance of a display radiance (Rec. 709 weights, as radiosity::luminance).
+float luminance(const glm::vec3& radiance);
+
 // An exposure that maps the area-weighted log-average luminance of the mesh to `key` (Reinhard
 // et al. 2002), so small bright emitters do not darken the picture. 1 for an empty mesh.
 double autoExposure(const DisplayMesh& mesh, double key = 0.25);

@@ -75,6 +75,17 @@ app::FrameSettings openingFrame(const engine::Scene& scene, const engine::Displa
   return frame;
 }
 
+// Draws `frame` of `mesh` once per iteration and reads it back to memory; with `newRadiance`,
+// taking the mesh's radiance as a new snapshot first.
+void drawFrames(benchmark::State& state, app::SceneRenderer& renderer, const engine::DisplayMesh& mesh,
+                const app::FrameSettings& frame, bool newRadiance) {
+  for (auto _ : state) {
+    if (newRadiance) renderer.updateRadiance(mesh);
+    renderer.draw(mesh, frame);
+    benchmark::DoNotOptimize(app::readFramebuffer(frame.width, frame.height, GL_FRONT).pixels.data());
+  }
+}
+
 // One frame as `walkrad render` draws it (context and upload done once), read back to memory.
 void headlessFrame(benchmark::State& state) {
   const char* name = kScenes[state.range(0)];
@@ -87,10 +98,7 @@ void headlessFrame(benchmark::State& state) {
   renderer.upload(mesh);
   app::FrameSettings frame = openingFrame(scene, mesh, width, height);
   frame.wireframe = state.range(1) != 0;
-  for (auto _ : state) {
-    renderer.draw(mesh, frame);
-    benchmark::DoNotOptimize(app::readFramebuffer(width, height, GL_FRONT).pixels.data());
-  }
+  drawFrames(state, renderer, mesh, frame, false);
   state.SetLabel(std::string(name) + (frame.wireframe ? " wireframe" : ""));
 }
 BENCHMARK(headlessFrame)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
@@ -123,11 +131,7 @@ void modelFrame(benchmark::State& state) {
   renderer.upload(mesh);
   app::FrameSettings frame = openingFrame(scene, mesh, width, height);
   frame.levelOfDetail = state.range(1) != 0;
-  for (auto _ : state) {
-    if (state.range(2) != 0) renderer.updateRadiance(mesh);
-    renderer.draw(mesh, frame);
-    benchmark::DoNotOptimize(app::readFramebuffer(width, height, GL_FRONT).pixels.data());
-  }
+  drawFrames(state, renderer, mesh, frame, state.range(2) != 0);
   state.SetLabel(std::string(model.name) + (frame.levelOfDetail ? " level of detail" : " every element") +
                  (state.range(2) != 0 ? ", new radiance" : ""));
   state.counters["triangles"] = static_cast<double>(renderer.lastFrame().triangles);
