@@ -195,7 +195,8 @@ namespace {
 
 // The rule's Gauss points: a triangle's at its barycentric (2/3, 1/6, 1/6) and turns, a quad's
 // on its bilinear map at u, v in {1/2 -+ 1/(2 sqrt 3)}, u the outer loop.
-constexpr double kGaussQuad[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+// 1/2 -+ 1/(2 sqrt 3) written out: std::sqrt is not constexpr in the standard (clang refuses it).
+constexpr double kGaussQuad[2] = {0.21132486540518711775, 0.78867513459481288225};
 constexpr double kGaussTriangle[3][3] = {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
 
 glm::dvec3 gaussPoint(const Polygon3& p, int k) {
