@@ -1,19 +1,15 @@
 #version 330 core
-// Gouraud shading: radiance is computed per vertex (by the solver) and interpolated, as linear
-// radiance or, when the vertices are tone mapped, as the displayed colour.
+// Gouraud shading: what each vertex holds (linear radiance from the solver, or its displayed
+// colour) is interpolated across the triangles.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_radiance;
 
 // Clip coordinates from the vertices' (the display's, through their object's transform).
 uniform mat4 u_clipFromObject;
-uniform float u_exposure;
-uniform bool u_toneMapVertices;
 
 out vec3 v_radiance;
 
-#include "tone.glsl"
-
 void main() {
   gl_Position = u_clipFromObject * vec4(a_position, 1.0);
-  v_radiance = u_toneMapVertices ? displayColour(a_radiance, u_exposure) : a_radiance;
+  v_radiance = a_radiance;
 }

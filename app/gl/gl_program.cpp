@@ -32,11 +32,12 @@ std::string_view embedded(std::string_view file) {
 }
 
 // GLSL has no #include: each line `#include "NAME"` becomes the embedded file NAME, so that the
-// stages share functions (tone.glsl).
-std::string withIncludes(std::string_view text) {
+// stages share functions (tone.glsl). `defines` follow the first line (GLSL's #version must come
+// first).
+std::string preprocessed(std::string_view text, std::initializer_list<std::string_view> defines) {
   static constexpr std::string_view kInclude = "#include \"";
   std::string out;
-  while (!text.empty()) {
+  for (bool first = true; !text.empty(); first = false) {
     const size_t end = std::min(text.find('\n'), text.size() - 1) + 1;
     const std::string_view line = text.substr(0, end);
     const size_t close = line.find('"', kInclude.size());
@@ -45,12 +46,14 @@ std::string withIncludes(std::string_view text) {
     else
       out += line;
     text.remove_prefix(end);
+    if (first)
+      for (const std::string_view name : defines) out.append("#define ").append(name) += '\n';
   }
   return out;
 }
 
-GLuint compile(GLenum stage, std::string_view file) {
-  const std::string text = withIncludes(embedded(file));
+GLuint compile(GLenum stage, std::string_view file, std::initializer_list<std::string_view> defines) {
+  const std::string text = preprocessed(embedded(file), defines);
   const GLuint shader = glCreateShader(stage);
   const char* data = text.data();
   const auto size = static_cast<GLint>(text.size());
@@ -62,9 +65,10 @@ GLuint compile(GLenum stage, std::string_view file) {
 
 }  // namespace
 
-GlProgram::GlProgram(std::string_view vertexFile, std::string_view fragmentFile) {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile);
-  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragmentFile);
+GlProgram::GlProgram(std::string_view vertexFile, std::string_view fragmentFile,
+                     std::initializer_list<std::string_view> defines) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile, defines);
+  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
   id_ = glCreateProgram();
   glAttachShader(id_, vertex);
   glAttachShader(id_, fragment);

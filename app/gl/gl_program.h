@@ -3,14 +3,17 @@
 
 #include <glad/gl.h>
 
+#include <initializer_list>
 #include <string_view>
 
 namespace app {
 
 class GlProgram {
  public:
-  // Compiles and links; throws std::runtime_error with the GL info log on failure.
-  GlProgram(std::string_view vertexFile, std::string_view fragmentFile);
+  // Compiles and links, with each of `defines` #defined in both stages (a variant of the
+  // shaders); throws std::runtime_error with the GL info log on failure.
+  GlProgram(std::string_view vertexFile, std::string_view fragmentFile,
+            std::initializer_list<std::string_view> defines = {});
   ~GlProgram();
   GlProgram(const GlProgram&) = delete;
   GlProgram& operator=(const GlProgram&) = delete;

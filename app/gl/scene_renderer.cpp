@@ -54,8 +54,7 @@ void flipRows(std::vector<T>& pixels, size_t rowLength, int height) {
 
 }  // namespace
 
-SceneRenderer::SceneRenderer()
-    : shadingClip_(shading_.uniform("u_clipFromObject")), wireClip_(wire_.uniform("u_clipFromObject")) {}
+SceneRenderer::SceneRenderer() : wireClip_(wire_.uniform("u_clipFromObject")) {}
 
 SceneRenderer::~SceneRenderer() { release(); }
 
@@ -87,9 +86,7 @@ void SceneRenderer::upload(const engine::DisplayMesh& mesh) {
     glBindBuffer(GL_ARRAY_BUFFER, chunk.positions);
     glEnableVertexAttribArray(kPosition);
     glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, chunk.radiance);
-    glEnableVertexAttribArray(kRadiance);
-    glVertexAttribPointer(kRadiance, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(kRadiance);  // its form and buffer: fillRadiance()
     glBindVertexArray(0);
     fill(mesh, chunk);
   }
@@ -101,9 +98,8 @@ void SceneRenderer::fill(const engine::DisplayMesh& mesh, Chunk& chunk) {
   chunk.low = glm::vec3{INFINITY}, chunk.high = glm::vec3{-INFINITY};
   for (const glm::vec3& p : vectors_) chunk.low = glm::min(chunk.low, p), chunk.high = glm::max(chunk.high, p);
   uploadBuffer(chunk.positions, GL_ARRAY_BUFFER, vectors_);
-  uploadBuffer(chunk.radiance, GL_ARRAY_BUFFER, nullptr, vectors_.size() * sizeof(glm::vec3));
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  fillRadiance(mesh, chunk);
+  chunk.radianceStale = true;
 
   // Element buffers are the VAO's state.
   glBindVertexArray(chunk.vao);
@@ -114,12 +110,35 @@ void SceneRenderer::fill(const engine::DisplayMesh& mesh, Chunk& chunk) {
   chunk.band = kUngathered;
 }
 
-void SceneRenderer::fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk) {
-  // Into the storage fill() made: a new store every snapshot would cost llvmpipe fresh pages.
-  gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
+void SceneRenderer::fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk, std::optional<float> colourExposure) {
+  const void* data = nullptr;
+  size_t bytes = 0;
+  if (colourExposure) {
+    if (!colours_ || colours_->exposure() != *colourExposure) colours_.emplace(*colourExposure);
+    indices_.clear();
+    for (uint32_t s : chunk.surfaces)
+      for (const glm::vec3& radiance : mesh.surfaces[s].radiance) indices_.push_back(colours_->rgba(radiance));
+    data = indices_.data(), bytes = indices_.size() * sizeof(uint32_t);
+  } else {
+    gatherVertices(mesh, chunk.surfaces, &engine::SurfaceDisplay::radiance, vectors_);
+    data = vectors_.data(), bytes = vectors_.size() * sizeof(glm::vec3);
+  }
   glBindBuffer(GL_ARRAY_BUFFER, chunk.radiance);
-  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vectors_.size() * sizeof(glm::vec3)), vectors_.data());
+  if (bytes == chunk.radianceBytes && colourExposure.has_value() == chunk.colourExposure.has_value()) {
+    // Into the storage there is: a new store every snapshot would cost llvmpipe fresh pages.
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
+  } else {
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_DYNAMIC_DRAW);
+    glBindVertexArray(chunk.vao);  // the attribute's form is the VAO's state
+    if (colourExposure)
+      glVertexAttribPointer(kRadiance, 4, GL_UNSIGNED_BYTE, GL_TRUE, 0, nullptr);
+    else
+      glVertexAttribPointer(kRadiance, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindVertexArray(0);
+    chunk.radianceBytes = bytes;
+  }
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  chunk.colourExposure = colourExposure;
   chunk.radianceStale = false;
   bool changed = false;
   for (uint32_t s : chunk.surfaces) {
@@ -189,10 +208,12 @@ void SceneRenderer::cull(const FrameSettings& frame) {
 
 void SceneRenderer::drawTriangles(const engine::DisplayMesh& mesh, const FrameSettings& frame, bool linearOutput) {
   cull(frame);
+  const std::optional<float> colourExposure =
+      frame.toneMapVertices && !linearOutput ? std::optional(frame.exposure) : std::nullopt;
   for (size_t c = 0; c < chunks_.size(); ++c) {
     if (!visible_[c]) continue;
     Chunk& chunk = chunks_[c];
-    if (chunk.radianceStale) fillRadiance(mesh, chunk);
+    if (chunk.radianceStale || chunk.colourExposure != colourExposure) fillRadiance(mesh, chunk, colourExposure);
     gatherDetail(mesh, frame, chunk);
     lastFrame_.triangles += static_cast<size_t>(chunk.triangleIndices) / 3;
   }
@@ -201,10 +222,10 @@ void SceneRenderer::drawTriangles(const engine::DisplayMesh& mesh, const FrameSe
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glUseProgram(shading_.id());
-  glUniform1f(shading_.uniform("u_exposure"), frame.exposure);
-  glUniform1i(shading_.uniform("u_linearOutput"), linearOutput ? 1 : 0);
-  glUniform1i(shading_.uniform("u_toneMapVertices"), frame.toneMapVertices && !linearOutput ? 1 : 0);
+  const GlProgram& shading = colourExposure || linearOutput ? passThrough_ : toneMapping_;
+  const GLint clip = shading.uniform("u_clipFromObject");
+  glUseProgram(shading.id());
+  glUniform1f(shading.uniform("u_exposure"), frame.exposure);
 
   // Faces are one-sided, and their backs are not drawn: a walker outside a room sees into it
   // (a doll's house view) instead of a black wall, and silhouettes get no black seams where a
@@ -216,7 +237,7 @@ void SceneRenderer::drawTriangles(const engine::DisplayMesh& mesh, const FrameSe
   for (size_t c = 0; c < chunks_.size(); ++c) {
     if (!visible_[c]) continue;
     const Chunk& chunk = chunks_[c];
-    glUniformMatrix4fv(shadingClip_, 1, GL_FALSE, glm::value_ptr(clipFromObject(frame, chunk.object)));
+    glUniformMatrix4fv(clip, 1, GL_FALSE, glm::value_ptr(clipFromObject(frame, chunk.object)));
     glBindVertexArray(chunk.vao);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.triangles);
     glDrawElements(GL_TRIANGLES, chunk.triangleIndices, GL_UNSIGNED_INT, nullptr);

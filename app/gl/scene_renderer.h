@@ -10,6 +10,7 @@
 #pragma once
 
 #include "app/gl/display_chunks.h"
+#include "app/gl/display_colours.h"
 #include "app/gl/gl_program.h"
 #include "app/gl/level_of_detail.h"
 #include "app/image/image.h"
@@ -37,7 +38,8 @@ struct FrameSettings {
   bool levelOfDetail = false;
   // The displayed colour computed per vertex and interpolated, as Gouraud shading hardware did
   // (Pixel-Planes 5 among it), instead of per pixel: a third less of llvmpipe's work on a kitchen
-  // at 1280x720, for gradients a little darker between unlike vertices. The window's frames; off,
+  // at 1280x720, for gradients a little darker between unlike vertices. The colours are made on
+  // the CPU when radiance or exposure changes (display_colours.h). The window's frames; off,
   // images keep the exact per-pixel colour.
   bool toneMapVertices = false;
 };
@@ -93,13 +95,18 @@ class SceneRenderer {
     // without one, kUngathered: to be gathered); whether radiance is waiting to be uploaded.
     int band = kUngathered;
     float pixelsPerUnit = 0;
-    bool radianceStale = false;
+    bool radianceStale = true;
+    // What its radiance buffer holds (bytes of it): displayed colours at this exposure, or
+    // linear radiance when empty.
+    std::optional<float> colourExposure;
+    size_t radianceBytes = 0;
   };
   static constexpr int kUngathered = INT_MAX, kEveryElement = INT_MAX - 1;
 
   void fill(const engine::DisplayMesh& mesh, Chunk& chunk);
-  // Uploads the chunk's radiance and judges its surfaces' evenness (even_) anew.
-  void fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk);
+  // Uploads the chunk's radiance, as displayed colours at `colourExposure` when there is one, and
+  // judges its surfaces' evenness (even_) anew.
+  void fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk, std::optional<float> colourExposure);
   // The chunk's triangles at the frame's level of detail, gathered again when it changed.
   void gatherDetail(const engine::DisplayMesh& mesh, const FrameSettings& frame, Chunk& chunk);
   void release();
@@ -108,9 +115,12 @@ class SceneRenderer {
   void cull(const FrameSettings& frame);
   void drawTriangles(const engine::DisplayMesh& mesh, const FrameSettings& frame, bool linearOutput);
 
-  GlProgram shading_{"gouraud.vert", "gouraud.frag"};
+  // The shading's variants: tone mapping each pixel, and passing on what the vertices hold (linear
+  // radiance or displayed colours).
+  GlProgram toneMapping_{"gouraud.vert", "gouraud.frag"};
+  GlProgram passThrough_{"gouraud.vert", "gouraud.frag", {"PASS_THROUGH"}};
   GlProgram wire_{"wire.vert", "wire.frag"};
-  GLint shadingClip_ = -1, wireClip_ = -1;
+  GLint wireClip_ = -1;
   std::vector<Chunk> chunks_;
   std::vector<uint32_t> chunkOf_;  // per surface
   std::vector<glm::mat4> displayFromObject_;
@@ -120,7 +130,8 @@ class SceneRenderer {
   FrameCounts lastFrame_;
   // Scratch for assembling a chunk's buffers, kept from chunk to chunk.
   std::vector<glm::vec3> vectors_;
-  std::vector<uint32_t> indices_;
+  std::vector<uint32_t> indices_;  // also colours
+  std::optional<DisplayColours> colours_;  // at the exposure last asked for
 };
 
 // Reads the bound framebuffer's `buffer` (GL_BACK, GL_FRONT, GL_COLOR_ATTACHMENT0) as RGB8, top

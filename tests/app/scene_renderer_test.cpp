@@ -279,5 +279,26 @@ TEST(SceneRenderer, ToneMappingTheVerticesIsCloseToToneMappingThePixelsAndNeverB
   EXPECT_EQ(brighter, 0u);
 }
 
+// Colours made per vertex are made again when the exposure changes: the same renderer draws at the
+// new exposure what a fresh one draws there, and not the picture at the old.
+TEST(SceneRenderer, ColoursMadePerVertexFollowTheExposure) {
+  const Context context;
+  const engine::Scene scene = engine::loadScene(std::string(WALKRAD_ASSETS) + "/office.json");
+  engine::DisplayMesh mesh = officeDisplay(scene);
+  lightSteeply(mesh);
+  FrameSettings frame = frameFor(scene, mesh);
+  frame.toneMapVertices = true;
+  frame.exposure = 1;
+  SceneRenderer renderer;
+  renderer.upload(mesh);
+  const ImageRgb8 before = drawn(renderer, mesh, frame);
+  frame.exposure = 2;
+  const ImageRgb8 after = drawn(renderer, mesh, frame);
+  SceneRenderer fresh;
+  fresh.upload(mesh);
+  EXPECT_EQ(after.pixels, drawn(fresh, mesh, frame).pixels);
+  EXPECT_NE(after.pixels, before.pixels);
+}
+
 }  // namespace
 }  // namespace app

@@ -131,6 +131,7 @@ void modelFrame(benchmark::State& state) {
   renderer.upload(mesh);
   app::FrameSettings frame = openingFrame(scene, mesh, width, height);
   frame.levelOfDetail = state.range(1) != 0;
+  frame.toneMapVertices = true;
   drawFrames(state, renderer, mesh, frame, state.range(2) != 0);
   state.SetLabel(std::string(model.name) + (frame.levelOfDetail ? " level of detail" : " every element") +
                  (state.range(2) != 0 ? ", new radiance" : ""));
