@@ -77,11 +77,15 @@ std::optional<engine::PoseEdit> ObjectDrag::turn(double degrees) {
 }
 
 bool ObjectDrag::place(const engine::ObjectPose& pose) {
+  if (refusedPose_ && *refusedPose_ == std::pair{*selected_, pose}) return false;
   if (!view_.setPose(*selected_, pose)) return false;
   newPose_ = {*selected_, pose};
   return true;
 }
 
-void ObjectDrag::refused(const engine::PoseRefusal& refusal) { refusal_ = refusal.why; }
+void ObjectDrag::refused(const engine::PoseRefusal& refusal) {
+  refusal_ = refusal.why;
+  refusedPose_ = {refusal.object, refusal.refused};
+}
 
 }  // namespace engine

@@ -52,10 +52,11 @@ class ObjectDrag {
   void refused(const engine::PoseRefusal& refusal);
   // Why the document last refused a pose (one line), until `accepted` says a later one was taken.
   const std::string& refusal() const { return refusal_; }
-  void accepted() { refusal_.clear(); }
+  void accepted() { refusal_.clear(), refusedPose_.reset(); }
 
  private:
-  // Puts the selected object at `pose`, unless refused; returns whether it moved.
+  // Puts the selected object at `pose`, unless the view or the document refused it (the pointer
+  // held on a refused spot does not ask the document again every frame); returns whether it moved.
   bool place(const engine::ObjectPose& pose);
   // Puts the grabbed object where the drag's slide and lift take it, within the scene limits.
   bool moveGrabbed();
@@ -68,6 +69,7 @@ class ObjectDrag {
   double lifted_ = 0;          // height added by the wheel during this drag
   glm::dvec3 slid_{0};         // horizontal offset from the drag's start
   std::string refusal_;
+  std::optional<std::pair<uint32_t, engine::ObjectPose>> refusedPose_;  // the last the document refused
   std::optional<std::pair<uint32_t, engine::ObjectPose>> newPose_;
 };
 

@@ -343,6 +343,13 @@ TEST(Session, ARefusedPosePutsTheObjectBack) {
   EXPECT_NE(session.panel().editReport.find("detail finer than the coordinates resolve"), std::string::npos)
       << session.panel().editReport;
 
+  // Held on the refused spot, the pose is not asked for again: the document does not try to mesh
+  // it frame after frame.
+  const uint64_t taken = session.panel().light->edits;
+  for (int i = 0; i < 5; ++i) settle(session, nullptr, input);
+  EXPECT_EQ(session.panel().light->edits, taken);
+  EXPECT_EQ(poseOf(session.scene().objects[box]), good);
+
   // Dragged on to a pose the document takes, the report goes; the drag is one edit.
   input.pointer = below(900000.3, 900000.5);
   session.frame(input);
