@@ -10,8 +10,10 @@
 namespace engine {
 
 // `text` must be the walkrad-scene/1 text `scene` was parsed from. Everything but the poses is
-// kept as it was, in order (formatting is the writer's: two-space indents); a pose is written only
-// where it differs from the file's (or the spec's default where the file gives none).
+// kept byte for byte, its layout the author's (a scene under version control shows a move as the
+// lines it changed); a pose is written only where it differs from the file's (or the spec's
+// default where the file gives none): its value replaced in place, or added as the object's last
+// member, laid out as the members before it.
 std::string sceneTextWithPoses(std::string_view text, const Scene& scene);
 
 }  // namespace engine
