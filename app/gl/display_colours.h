@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -16,8 +17,17 @@ class DisplayColours {
 
   float exposure() const { return exposure_; }
   // RGBA8 (alpha 255), red in the lowest byte: GL_UNSIGNED_BYTE x 4 in memory order. Within one
-  // level of the exact encoding.
-  uint32_t rgba(const glm::vec3& radiance) const;
+  // level of the exact encoding. Inline: a new snapshot turns millions of vertices.
+  uint32_t rgba(const glm::vec3& radiance) const {
+    uint32_t out = 0xff000000u;
+    for (int k = 0; k < 3; ++k) {
+      // NaN (a solver fault) clamps to black, as the shader's clamp leaves it undefined.
+      const float c = std::clamp(radiance[k] * exposure_, 0.0f, 1.0f);
+      const auto step = c == c ? static_cast<size_t>(c * kSteps + 0.5f) : 0;
+      out |= static_cast<uint32_t>(encoded_[step]) << (8 * k);
+    }
+    return out;
+  }
 
  private:
   // The encoding of c in [0, 1] at kSteps + 1 evenly spaced points: steep enough steps that the

@@ -178,8 +178,6 @@ glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh) {
   return ambient;
 }
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 double autoExposure(const DisplayMesh& mesh, double key) {
   double logSum = 0, areaSum = 0;
   for (const SurfaceDisplay& s : mesh.surfaces)

@@ -81,8 +81,9 @@ void setRadiance(DisplayMesh& mesh, const radiosity::Solver& solver);
 // radiance (the picture before any light is shot); returns that ambient radiance.
 glm::dvec3 shadeWithAmbient(const Scene& scene, DisplayMesh& mesh);
 
-// The luminance of a display radiance (Rec. 709 weights, as radiosity::luminance).
-float luminance(const glm::vec3& radiance);
+// The luminance of a display radiance (Rec. 709 weights, as radiosity::luminance). Inline: the
+// display judges millions of vertices with it at each new snapshot.
+inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 // An exposure that maps the area-weighted log-average luminance of the mesh to `key` (Reinhard
 // et al. 2002), so small bright emitters do not darken the picture. 1 for an empty mesh.
