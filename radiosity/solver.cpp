@@ -38,6 +38,7 @@
 
 #include "pxpl5/hemisphere.h"
 #include "util/check.h"
+#include "util/scratch.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -230,6 +231,10 @@ struct Solver::State {
     double replacedPixels = 0;
     glm::dvec3 replacedNew{0};
     uint64_t near = 0, small = 0;
+    // What the chunk holds for the next shot, and giving back what this one left spare
+    // (util/scratch.h; SolverSettings::scratchBytes).
+    size_t heldBytes() const { return util::heldBytes(judged, plans.steps, plans.factors, plans.sizes, factors); }
+    void releaseSpare() { util::releaseSpare(judged, plans.steps, plans.factors, plans.sizes, factors); }
   };
   std::array<ReceiverChunk, kReceiverChunks> chunks;
 
@@ -934,6 +939,8 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
       else depositAll();
     });
   }
+  // The chunks' storage stays for the next shot, within a bound.
+  stats.scratchBytes = util::releaseSpareBeyond(chunks, settings.scratchBytes);
   return sky * scale;
 }
 
