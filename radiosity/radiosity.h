@@ -99,6 +99,11 @@ struct SolverSettings {
   // them, are done again. Results are the same bit for bit. Kept for the patches that shoot first
   // until this many bytes are held; 0 keeps none.
   size_t shotCacheBytes = size_t{256} << 20;
+  // Of those, only a shot of at most this many bytes is kept. On a room the largest take under
+  // 2 MB (the kitchen's 1.6 MB, the office's 0.7 MB), and thousands fit in the budget; on a
+  // building every shot sees most of the elements (the White Room's take about 9.5 MB), so the
+  // budget held a few dozen patches' shots, worth little to an edit that corrects hundreds.
+  size_t shotCacheRecordBytes = size_t{4} << 20;
   // A shot's receivers are judged in chunks whose storage is kept for the next shot; beyond this
   // many bytes in all, a chunk's storage that a shot left more than half spare is freed instead.
   // Different shots fill different chunks, so without a bound they come to hold the sum of each

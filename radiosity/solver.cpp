@@ -294,7 +294,7 @@ struct Solver::State {
     return p < keptShots.size() && pointChosen[p] ? keptShots[p].get() : nullptr;
   }
   // The record for keeping patch p's first shot, sized, when it is to be kept (its point is
-  // chosen, it has none yet, the budget allows); keepShot fills and stores it.
+  // chosen, it has none yet, the budget allows it and its size); keepShot fills and stores it.
   std::optional<KeptShot> shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const;
   void keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, KeptShot& record);
   void storeShot(uint32_t p, KeptShot record);
@@ -752,7 +752,8 @@ std::optional<Solver::State::KeptShot> Solver::State::shotToKeep(uint32_t p, con
     next.factors += static_cast<uint32_t>(chunk.plans.factors.size());
     record.chunkStart.push_back(next);
   }
-  if (keptBytes + KeptShot::bytesFor(frame.factors.size(), record.chunkStart.back()) > settings.shotCacheBytes) return {};
+  const size_t bytes = KeptShot::bytesFor(frame.factors.size(), record.chunkStart.back());
+  if (bytes > settings.shotCacheRecordBytes || keptBytes + bytes > settings.shotCacheBytes) return {};
   return record;
 }
 

@@ -212,6 +212,22 @@ TEST(RadiositySolver, KeptShotsGiveTheSameLight) {
     }
 }
 
+// A shot larger than SolverSettings::shotCacheRecordBytes is not kept, however much the budget
+// has room for: a building's shots would fill it with a few patches'.
+TEST(RadiositySolver, KeepsNoShotLargerThanItsRecordBound) {
+  std::vector<Surface> scene = closedBox(1, 0.25, glm::dvec3(0.6), glm::dvec3(0));
+  scene.push_back(rectangle({0.3, 0.3, 0.999}, {0, 0.3, 0}, {0.3, 0, 0}, 0.1, glm::dvec3(0.5), glm::dvec3(4)));
+  for (Surface& s : scene) s.patchOfElement = groupIntoPatches(s, 0.5);
+  SolverSettings small;
+  small.shotCacheRecordBytes = 1024;
+  Solver a(scene), b(scene, small);
+  a.solve(0.01);
+  b.solve(0.01);
+  EXPECT_GT(a.stats().reusedShots, 0u);
+  EXPECT_EQ(b.stats().reusedShots, 0u);
+  EXPECT_EQ(a.stats().shots, b.stats().shots);
+}
+
 // A shot's receivers are judged in chunks whose storage is kept for the next shot; beyond
 // SolverSettings::scratchBytes a shot gives back what it left more than half spare. A box's
 // ceiling shot as one patch judges every element near; the small patches that shoot after it
