@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pxpl5/pxpl5.h"
+#include "util/scratch.h"
 
 #include <algorithm>
 #include <vector>
@@ -57,6 +58,10 @@ struct Emitter::Batch {
   std::vector<uint64_t> regionWork;  // per region, bounding-box pixels of the streams sent to it
   void countStreams();
 
+  // What the batch holds for the next frame, and giving back what this one left spare
+  // (util/scratch.h; MachineSettings::scratchBytes).
+  size_t heldBytes() const { return util::heldBytes(primitives, linear, quadratic, binned, pairs); }
+  void releaseSpare() { util::releaseSpare(primitives, linear, quadratic, binned, pairs); }
   void clear() {
     primitives.clear();
     linear.clear();

@@ -5,6 +5,7 @@
 #include "pxpl5/batch.h"
 #include "pxpl5/evaluator.h"
 #include "pxpl5/worker_pool.h"
+#include "util/scratch.h"
 
 #include <algorithm>
 #include <atomic>
@@ -282,6 +283,8 @@ void Machine::renderFrame(PixelRect window, size_t primitiveCount, const SetupPr
     counters.emulatedPixelOps += s.pixelOps;
     counters.pixelsWritten += s.written;
   }
+  // The batches' storage stays for the next frame, within a bound.
+  counters.scratchBytes = util::releaseSpareBeyond(st.batches, st.settings.scratchBytes);
 }
 
 }  // namespace pxpl5

@@ -53,6 +53,11 @@ struct MachineSettings {
   int width = 512, height = 512;  // screen pixels (> 0); regions cover it in 128 x 128 tiles
   int graphicsProcessors = 1;     // worker threads for both phases (>= 1); results do not depend on it
   Evaluator evaluator = Evaluator::kVector;
+  // The graphics processors' output is kept from frame to frame, batch by batch; beyond this many
+  // bytes in all, a batch's storage that a frame left more than half spare is freed instead.
+  // Frames from different points fill different batches, so without a bound they come to hold
+  // the sum of each batch's largest (util/scratch.h).
+  size_t scratchBytes = size_t{64} << 20;
 };
 
 // Load of one processor in the last frame. Which thread took which work varies between runs;
@@ -74,6 +79,8 @@ struct FrameCounters {
   uint64_t machinePixelOps = 0;    // instructions x 16,384: what the real renderers would evaluate
   uint64_t emulatedPixelOps = 0;   // what the emulator evaluated (bounding boxes, rows narrowed)
   uint64_t pixelsWritten = 0;      // depth-test winners
+  uint64_t scratchBytes = 0;       // what the graphics processors' output holds after the frame
+                                   // for the next (MachineSettings::scratchBytes)
   std::vector<ProcessorLoad> graphicsProcessors, renderers;  // one entry per thread
 };
 

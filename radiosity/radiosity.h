@@ -99,6 +99,16 @@ struct SolverSettings {
   // them, are done again. Results are the same bit for bit. Kept for the patches that shoot first
   // until this many bytes are held; 0 keeps none.
   size_t shotCacheBytes = size_t{256} << 20;
+  // Of those, only a shot of at most this many bytes is kept. On a room the largest take under
+  // 2 MB (the kitchen's 1.6 MB, the office's 0.7 MB), and thousands fit in the budget; on a
+  // building every shot sees most of the elements (the White Room's take about 9.5 MB), so the
+  // budget held a few dozen patches' shots, worth little to an edit that corrects hundreds.
+  size_t shotCacheRecordBytes = size_t{4} << 20;
+  // A shot's receivers are judged in chunks whose storage is kept for the next shot; beyond this
+  // many bytes in all, a chunk's storage that a shot left more than half spare is freed instead.
+  // Different shots fill different chunks, so without a bound they come to hold the sum of each
+  // chunk's largest (three times a shot's on a building after 34 shots, and growing).
+  size_t scratchBytes = size_t{64} << 20;
 };
 
 // Counters since construction. Powers are per channel (see the units above).
@@ -118,6 +128,8 @@ struct Stats {
   uint64_t patchTrees = 0;         // patches' element trees built (near field): as patches are set
                                    // up, by edits for the surfaces they replace, and as patches
                                    // first shoot
+  uint64_t scratchBytes = 0;       // not a count: what the receivers' scratch holds after the
+                                   // last shot for the next (SolverSettings::scratchBytes)
   double seconds = 0;              // wall time spent in step()
   glm::dvec3 emittedPower{0};      // pi x sum of emission x area
   glm::dvec3 absorbedPower{0};     // absorbed by the front of elements, (1 - rho) of what arrives

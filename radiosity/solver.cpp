@@ -38,6 +38,7 @@
 
 #include "pxpl5/hemisphere.h"
 #include "util/check.h"
+#include "util/scratch.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -230,6 +231,10 @@ struct Solver::State {
     double replacedPixels = 0;
     glm::dvec3 replacedNew{0};
     uint64_t near = 0, small = 0;
+    // What the chunk holds for the next shot, and giving back what this one left spare
+    // (util/scratch.h; SolverSettings::scratchBytes).
+    size_t heldBytes() const { return util::heldBytes(judged, plans.steps, plans.factors, plans.sizes, factors); }
+    void releaseSpare() { util::releaseSpare(judged, plans.steps, plans.factors, plans.sizes, factors); }
   };
   std::array<ReceiverChunk, kReceiverChunks> chunks;
 
@@ -289,7 +294,7 @@ struct Solver::State {
     return p < keptShots.size() && pointChosen[p] ? keptShots[p].get() : nullptr;
   }
   // The record for keeping patch p's first shot, sized, when it is to be kept (its point is
-  // chosen, it has none yet, the budget allows); keepShot fills and stores it.
+  // chosen, it has none yet, the budget allows it and its size); keepShot fills and stores it.
   std::optional<KeptShot> shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const;
   void keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, KeptShot& record);
   void storeShot(uint32_t p, KeptShot record);
@@ -747,7 +752,8 @@ std::optional<Solver::State::KeptShot> Solver::State::shotToKeep(uint32_t p, con
     next.factors += static_cast<uint32_t>(chunk.plans.factors.size());
     record.chunkStart.push_back(next);
   }
-  if (keptBytes + KeptShot::bytesFor(frame.factors.size(), record.chunkStart.back()) > settings.shotCacheBytes) return {};
+  const size_t bytes = KeptShot::bytesFor(frame.factors.size(), record.chunkStart.back());
+  if (bytes > settings.shotCacheRecordBytes || keptBytes + bytes > settings.shotCacheBytes) return {};
   return record;
 }
 
@@ -934,6 +940,8 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
       else depositAll();
     });
   }
+  // The chunks' storage stays for the next shot, within a bound.
+  stats.scratchBytes = util::releaseSpareBeyond(chunks, settings.scratchBytes);
   return sky * scale;
 }
 

@@ -100,14 +100,19 @@ void SceneRenderer::fill(const engine::DisplayMesh& mesh, Chunk& chunk) {
   uploadBuffer(chunk.positions, GL_ARRAY_BUFFER, vectors_);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   chunk.radianceStale = true;
+  chunk.edgesStale = true;
+  chunk.band = kUngathered;
+}
 
+void SceneRenderer::gatherEdges(const engine::DisplayMesh& mesh, Chunk& chunk) {
+  gatherIndices(mesh, chunk.surfaces, &engine::SurfaceDisplay::edges, indices_);
   // Element buffers are the VAO's state.
   glBindVertexArray(chunk.vao);
-  gatherIndices(mesh, chunk.surfaces, &engine::SurfaceDisplay::edges, indices_);
   uploadBuffer(chunk.edges, GL_ELEMENT_ARRAY_BUFFER, indices_);
   chunk.edgeIndices = static_cast<GLsizei>(indices_.size());
   glBindVertexArray(0);
-  chunk.band = kUngathered;
+  chunk.edgesStale = false;
+  ++edgeUploads_;
 }
 
 void SceneRenderer::fillRadiance(const engine::DisplayMesh& mesh, Chunk& chunk, std::optional<float> colourExposure) {
@@ -255,8 +260,9 @@ void SceneRenderer::draw(const engine::DisplayMesh& mesh, const FrameSettings& f
     const auto drawEdges = [&](bool selectedOnly, glm::vec3 colour) {
       glUniform4f(wire_.uniform("u_color"), colour.r, colour.g, colour.b, 1);
       for (size_t c = 0; c < chunks_.size(); ++c) {
-        const Chunk& chunk = chunks_[c];
+        Chunk& chunk = chunks_[c];
         if (!visible_[c] || (selectedOnly && chunk.object != *frame.highlight)) continue;
+        if (chunk.edgesStale) gatherEdges(mesh, chunk);
         glUniformMatrix4fv(wireClip_, 1, GL_FALSE, glm::value_ptr(clipFromObject(frame, chunk.object)));
         glBindVertexArray(chunk.vao);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.edges);

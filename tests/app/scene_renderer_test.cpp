@@ -211,6 +211,46 @@ TEST(SceneRenderer, TheSelectedObjectIsHighlighted) {
   EXPECT_GT(orangePixels(0.5, 1), 100u);
 }
 
+// A chunk's element edges are uploaded when first drawn, once until its chunk is filled again:
+// not for frames without the wireframe, for the selected object's chunk alone when it is
+// highlighted. Drawn after an update, they are the updated surface's.
+TEST(SceneRenderer, EdgesAreUploadedWhenFirstDrawn) {
+  const Context context;
+  engine::DisplayMesh mesh;
+  mesh.surfaces = {square(0, -5), square(1, -5)};
+  SceneRenderer renderer;
+  renderer.upload(mesh);
+  renderer.setObjectTransform(0, glm::translate(glm::mat4{1}, glm::vec3{-1.5f, 0, 0}));
+  renderer.setObjectTransform(1, glm::translate(glm::mat4{1}, glm::vec3{1.5f, 0, 0}));
+  FrameSettings frame;
+  frame.width = kWidth;
+  frame.height = kHeight;
+  frame.clipFromDisplay = glm::perspective(glm::radians(60.0f), static_cast<float>(kWidth) / kHeight, 0.1f, 100.0f) *
+                          glm::lookAt(glm::vec3{0}, glm::vec3{0, 0, -1}, glm::vec3{0, 1, 0});
+  drawn(renderer, mesh, frame);
+  EXPECT_EQ(renderer.edgeUploads(), 0u);
+  frame.highlight = 1;
+  drawn(renderer, mesh, frame);
+  drawn(renderer, mesh, frame);
+  EXPECT_EQ(renderer.edgeUploads(), 1u);
+  frame.wireframe = true;
+  drawn(renderer, mesh, frame);
+  EXPECT_EQ(renderer.edgeUploads(), 2u);
+
+  // Object 1's square made a triangle: its edges drawn again are the triangle's.
+  mesh.surfaces[1].triangles = {0, 1, 2};
+  mesh.surfaces[1].edges = {0, 1, 1, 2, 0, 2};
+  const std::vector<uint32_t> changed{1};
+  renderer.updateSurfaces(mesh, changed);
+  const ImageRgb8 image = drawn(renderer, mesh, frame);
+  EXPECT_EQ(renderer.edgeUploads(), 3u);
+  SceneRenderer anew;
+  anew.upload(mesh);
+  anew.setObjectTransform(0, glm::translate(glm::mat4{1}, glm::vec3{-1.5f, 0, 0}));
+  anew.setObjectTransform(1, glm::translate(glm::mat4{1}, glm::vec3{1.5f, 0, 0}));
+  EXPECT_EQ(image.pixels, drawn(anew, mesh, frame).pixels);
+}
+
 // The office's display, shaded by the ambient term: one radiance per surface.
 engine::DisplayMesh officeDisplay(const engine::Scene& office) {
   engine::DisplayMesh mesh = engine::displayMesh(office, engine::meshScene(office));

@@ -249,6 +249,31 @@ TEST(Pxpl5Machine, SameFrameForAnyNumberOfGraphicsProcessors) {
   }
 }
 
+// The graphics processors' output is kept, batch by batch, for the next frame; beyond
+// MachineSettings::scratchBytes a frame gives back what it left more than half spare. After a
+// frame of many primitives one of few: unbounded, the batches keep the first frame's storage;
+// bounded, they hold about what the second needs, and draw the same.
+TEST(Pxpl5Machine, GivesBackBatchStorageAFrameLeftSpareBeyondItsBound) {
+  const RandomFrame frame(3, 512, 512, 4000);
+  const auto everyNth = [&](size_t n) -> SetupProgram {
+    return [&frame, n](size_t begin, size_t end, Emitter& out) {
+      for (size_t i = begin; i < end; ++i)
+        if (i % n == 0) out.convex(frame.bounds[i], frame.edges[i], frame.depth[i], static_cast<uint32_t>(i));
+    };
+  };
+  MachineSettings bounded{512, 512, 2, Evaluator::kVector};
+  bounded.scratchBytes = 0;
+  Machine a({512, 512, 2, Evaluator::kVector}), b(bounded);
+  a.renderFrame(frame.bounds.size(), everyNth(1), 100);
+  b.renderFrame(frame.bounds.size(), everyNth(1), 100);
+  const uint64_t full = a.counters().scratchBytes;
+  a.renderFrame(frame.bounds.size(), everyNth(50), 100);
+  b.renderFrame(frame.bounds.size(), everyNth(50), 100);
+  EXPECT_EQ(a.counters().scratchBytes, full);
+  EXPECT_LT(b.counters().scratchBytes, full / 10);
+  EXPECT_TRUE(std::equal(a.valuePlane().begin(), a.valuePlane().end(), b.valuePlane().begin()));
+}
+
 // A scissored frame gives the whole frame's pixels inside its window (windows across region
 // borders, at the screen's edge, past it, empty) and leaves every pixel outside as the frame
 // before left it.
