@@ -228,6 +228,7 @@ class Solver {
   size_t surfaceCount() const;
   size_t elementCount() const;
   size_t patchCount() const;
+  size_t vertexCount() const;  // of all surfaces: their vertexRadiance's lengths summed
 
  private:
   struct State;

@@ -1764,5 +1764,10 @@ const Stats& Solver::stats() const { return state_->stats; }
 size_t Solver::surfaceCount() const { return state_->surfaces.size(); }
 size_t Solver::elementCount() const { return state_->polygon.size(); }
 size_t Solver::patchCount() const { return state_->unshot.size(); }
+size_t Solver::vertexCount() const {
+  size_t count = 0;
+  for (const State::SurfaceData& s : state_->surfaces) count += s.vertexCount;
+  return count;
+}
 
 }  // namespace radiosity

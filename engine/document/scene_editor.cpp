@@ -65,12 +65,10 @@ SceneEditor::SceneEditor(Scene scene, MeshedScene meshed)
   if (meshed_.surfaces.size() != scene_.surfaces.size())
     throw std::invalid_argument("a meshed scene of " + std::to_string(meshed_.surfaces.size()) + " surfaces for " +
                                 std::to_string(scene_.surfaces.size()));
-  // Only what can move needs its loaded positions kept.
-  for (size_t s = 0; s < meshed_.surfaces.size(); ++s) {
-    const bool movable = scene_.objects[scene_.surfaces[s].object].movable;
-    homePositions_.push_back(movable ? meshed_.surfaces[s].positions : std::vector<Vec3>{});
-    homeFrames_.push_back(meshed_.surfaces[s].worldFromPlane);
-  }
+  // Only what can move needs its loaded positions kept: a building's fixed walls are most surfaces.
+  for (uint32_t s = 0; s < meshed_.surfaces.size(); ++s)
+    if (scene_.objects[scene_.surfaces[s].object].movable)
+      home_.emplace(s, Home{meshed_.surfaces[s].positions, meshed_.surfaces[s].worldFromPlane});
   homeMesh_.assign(scene_.surfaces.size(), 1);
   loadedKeys_.assign(scene_.surfaces.size(), 1);
   for (uint32_t s = 0; s < scene_.surfaces.size(); ++s) {
@@ -179,8 +177,9 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
     if (recut.how == Remesh::kMovedAlong) {
       // The same plane coordinates, in a frame moved with the surface. The loaded mesh's adaptive
       // mesh (refined since, perhaps) is not this mesh.
-      for (size_t i = 0; i < mesh.positions.size(); ++i) mesh.positions[i] = motion.place(homePositions_[s][i]);
-      const PlaneFrame& loaded = homeFrames_[s];
+      const Home& asLoaded = home_.at(s);
+      for (size_t i = 0; i < mesh.positions.size(); ++i) mesh.positions[i] = motion.place(asLoaded.positions[i]);
+      const PlaneFrame& loaded = asLoaded.worldFromPlane;
       mesh.worldFromPlane = {motion.place(loaded.origin), motion.turn(loaded.u), motion.turn(loaded.v)};
       adaptive_.forget(s);
     } else if (recut.how == Remesh::kHolesChanged) {

@@ -73,9 +73,12 @@ class SceneEditor {
   // The surfaces without cut-outs where the objects stand now, from which cut-outs are made.
   ScenePoses poses_;
   ContactIndex contacts_;  // of the surfaces without cut-outs
-  // As loaded: the mesh positions and plane frames.
-  std::vector<std::vector<Vec3>> homePositions_;
-  std::vector<PlaneFrame> homeFrames_;
+  // Movable objects' surfaces (only they move along) as loaded: the mesh positions and plane frame.
+  struct Home {
+    std::vector<Vec3> positions;
+    PlaneFrame worldFromPlane;
+  };
+  std::unordered_map<uint32_t, Home> home_;
   std::vector<uint8_t> homeMesh_;  // per surface: its mesh is still the loaded one (moved rigidly)
   // Per surface: its element keys name elements of its loaded mesh or of adaptive meshes made
   // from it (not of a mesh made anew since).

@@ -46,9 +46,8 @@ glm::dmat4 RigidMotion::matrix() const {
 ScenePoses::ScenePoses(Scene scene) : scene_(std::move(scene)), surfacesOf_(scene_.objects.size()) {
   removeContacts(scene_.surfaces);
   // Only what can move needs its loaded outline kept: a building's fixed walls are most surfaces.
-  loaded_.resize(scene_.surfaces.size());
-  for (size_t s = 0; s < scene_.surfaces.size(); ++s)
-    if (scene_.objects[scene_.surfaces[s].object].movable) loaded_[s] = scene_.surfaces[s];
+  for (uint32_t s = 0; s < scene_.surfaces.size(); ++s)
+    if (scene_.objects[scene_.surfaces[s].object].movable) loaded_.emplace(s, scene_.surfaces[s]);
   for (const Object& o : scene_.objects) loadedPoses_.push_back(poseOf(o));
   for (uint32_t s = 0; s < scene_.surfaces.size(); ++s) surfacesOf_[scene_.surfaces[s].object].push_back(s);
   for (uint32_t o = 0; o < scene_.objects.size(); ++o) objectBounds_.push_back(boundsOf(o));
@@ -73,7 +72,7 @@ RigidMotion ScenePoses::motionTo(uint32_t object, const ObjectPose& pose) const 
 }
 
 Surface ScenePoses::placed(uint32_t surface, const RigidMotion& motion) const {
-  Surface s = loaded_[surface];
+  Surface s = loaded_.at(surface);
   for (Vec3& p : s.outer) p = motion.place(p);
   for (Ring3& hole : s.holes)
     for (Vec3& p : hole) p = motion.place(p);

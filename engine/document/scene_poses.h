@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -64,6 +65,7 @@ class ScenePoses {
   // From where the object stood when loaded to `pose`.
   RigidMotion motionTo(uint32_t object, const ObjectPose& pose) const;
   // The surface `surface` of a movable object as loaded (without cut-outs), placed by `motion`.
+  // Throws std::out_of_range for a fixed object's.
   Surface placed(uint32_t surface, const RigidMotion& motion) const;
 
   // Throws std::invalid_argument for an object that does not exist or is not movable, or a pose
@@ -76,7 +78,7 @@ class ScenePoses {
 
  private:
   Scene scene_;
-  std::vector<Surface> loaded_;  // as loaded, without cut-outs; empty for fixed objects
+  std::unordered_map<uint32_t, Surface> loaded_;  // movable objects' surfaces as loaded, without cut-outs
   std::vector<ObjectPose> loadedPoses_;
   std::vector<std::vector<uint32_t>> surfacesOf_;  // per object
   std::optional<std::pair<Vec3, Vec3>> boundsOf(uint32_t object) const;  // of its surfaces where they stand

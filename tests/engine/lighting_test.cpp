@@ -81,6 +81,7 @@ TEST(Lighting, SnapshotsMatchASolveOnThisThreadShotForShot) {
   const std::shared_ptr<const LightingSnapshot> first = lighting.latest();
   ASSERT_NE(first, nullptr);
   EXPECT_EQ(first->radiance.size(), display.vertices);
+  EXPECT_EQ(first->radiance.capacity(), display.vertices);  // sized once, not grown
   const auto done = waitFor(lighting, [](const LightingSnapshot& s) { return s.converged; });
   EXPECT_GT(done->version, first->version);
   EXPECT_LE(done->unshotFraction, 0.05);

@@ -52,6 +52,18 @@ TEST(SurfaceMesh, RepeatsInTheKitchenGetTheMeshesMeshingGives) {
   EXPECT_GT(shared.repeats(), scene.surfaces.size() / 2);
 }
 
+// A mesh holds what it uses, not the mesher's buffers sized for its tree: a scene's meshes are
+// held while it is lit.
+TEST(SurfaceMesh, AMeshHoldsNoMoreThanItUses) {
+  const Scene scene = loadScene(std::string(WALKRAD_ASSETS) + "/kitchen.json");
+  mesher::Mesher mesher;
+  for (const Surface& s : scene.surfaces) {
+    const SurfaceMesh meshed = meshSurface(s, mesher);
+    ASSERT_EQ(meshed.mesh.vertices.capacity(), meshed.mesh.vertices.size());
+    ASSERT_EQ(meshed.mesh.elements.capacity(), meshed.mesh.elements.size());
+  }
+}
+
 // A surface's mesh is the mesh an adaptive mesh of its polygon makes, element for element, and
 // its keys are that mesh's handles for them (element i: slot i, generation 0), so that adaptive
 // refinement and the solver know its elements by key (mesh_adaptation.h). Every surface of the
