@@ -44,6 +44,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <chrono>
 #include <cmath>
@@ -224,19 +225,49 @@ struct Solver::State {
   // order: taken by two processors, 16 chunks left the office's receiver work 19% longer than
   // half of it, 256 leave it 5% longer.
   static constexpr size_t kReceiverChunks = 256;
-  struct ReceiverChunk {
+  // Receivers judged, with the plans of their integrals (judgeReceivers). What it holds for the
+  // next shot, and giving back what this one left spare: util/scratch.h, SolverSettings::scratchBytes.
+  struct Judgement {
     std::vector<Judged> judged;
     NearPlans plans;
+    // Entries in each list, and the bytes they take.
+    struct Counts {
+      uint32_t judged = 0, plans = 0, steps = 0, factors = 0;
+      Counts operator+(const Counts& o) const { return {judged + o.judged, plans + o.plans, steps + o.steps, factors + o.factors}; }
+      size_t bytes() const {
+        return judged * sizeof(Judged) + plans * sizeof(NearPlanSize) + steps * sizeof(NearStep) + factors * sizeof(glm::dvec2);
+      }
+    };
+    Counts counts() const {
+      return {static_cast<uint32_t>(judged.size()), static_cast<uint32_t>(plans.sizes.size()),
+              static_cast<uint32_t>(plans.steps.size()), static_cast<uint32_t>(plans.factors.size())};
+    }
+    NearPlansView plansView() const { return {plans.steps, plans.factors, plans.sizes}; }
+    void clear() {
+      judged.clear();
+      plans.steps.clear();
+      plans.factors.clear();
+      plans.sizes.clear();
+    }
+    size_t heldBytes() const { return util::heldBytes(judged, plans.steps, plans.factors, plans.sizes); }
+    void releaseSpare() { util::releaseSpare(judged, plans.steps, plans.factors, plans.sizes); }
+  };
+  struct ReceiverChunk {
+    // Held to the end of a shot that may be kept (keepShot copies it); empty in another shot,
+    // which judges the chunk in its graphics processor's `judging`.
+    Judgement judgement;
     std::vector<NewFactor> factors;
     double replacedPixels = 0;
     glm::dvec3 replacedNew{0};
     uint64_t near = 0, small = 0;
-    // What the chunk holds for the next shot, and giving back what this one left spare
-    // (util/scratch.h; SolverSettings::scratchBytes).
-    size_t heldBytes() const { return util::heldBytes(judged, plans.steps, plans.factors, plans.sizes, factors); }
-    void releaseSpare() { util::releaseSpare(judged, plans.steps, plans.factors, plans.sizes, factors); }
+    size_t heldBytes() const { return judgement.heldBytes() + util::heldBytes(factors); }
+    void releaseSpare() { judgement.releaseSpare(), util::releaseSpare(factors); }
   };
   std::array<ReceiverChunk, kReceiverChunks> chunks;
+  // Per graphics processor, the judgement of the chunk it integrates in a shot that will not be
+  // kept, dropped once integrated: a building's shot from a patch that sees most of it near held
+  // 550 MB of plans in its chunks at once.
+  std::vector<Judgement> judging;
 
   // Per patch, its first shot's pixel factors, judged receivers and their plans, chunk by chunk
   // (SolverSettings::shotCacheBytes); none kept while chunkStart is empty.
@@ -245,13 +276,10 @@ struct Solver::State {
     double total = 0;
     std::vector<Judged> judged;
     NearPlans plans;
-    struct ChunkStart {
-      uint32_t judged = 0, plans = 0, steps = 0, factors = 0;
-    };
+    using ChunkStart = Judgement::Counts;
     std::vector<ChunkStart> chunkStart;  // kReceiverChunks + 1 offsets into `judged` and `plans`
     static size_t bytesFor(size_t factors, const ChunkStart& end) {
-      return factors * sizeof(pxpl5::IdFactor) + end.judged * sizeof(Judged) + end.plans * sizeof(NearPlanSize) +
-             end.steps * sizeof(NearStep) + end.factors * sizeof(glm::dvec2) + (kReceiverChunks + 1) * sizeof(ChunkStart);
+      return factors * sizeof(pxpl5::IdFactor) + end.bytes() + (kReceiverChunks + 1) * sizeof(ChunkStart);
     }
     size_t bytes() const { return chunkStart.empty() ? 0 : bytesFor(factors.size(), chunkStart.back()); }
     // Chunk c's judged receivers and their plans.
@@ -272,7 +300,9 @@ struct Solver::State {
   Stats stats;
 
   explicit State(const SolverSettings& s)
-      : settings(s), renderer(pxpl5::HemisphereSettings{s.resolution, pxpl5::Projection::kHemisphere, s.graphicsProcessors}) {}
+      : settings(s),
+        renderer(pxpl5::HemisphereSettings{s.resolution, pxpl5::Projection::kHemisphere, s.graphicsProcessors}),
+        judging(static_cast<size_t>(renderer.settings().graphicsProcessors)) {}
 
   // The elements and patches of `input`'s surfaces; in an edit, those `input` leaves null are
   // `kept`'s (the state before), as they were given to it.
@@ -280,10 +310,10 @@ struct Solver::State {
   double visibility(const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, const glm::dvec3& eye, uint32_t j,
                     double unoccluded) const;
   // The near and small receivers among elements [begin, end) of shooter p's frame judged (see
-  // shoot), with the plans of the near ones' integrals, into `out` (integrateJudged gives their
-  // factors).
+  // shoot), with the plans of the near ones' integrals, into `into`, their counts into `out`
+  // (integrateJudged gives their factors).
   void judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes, uint32_t begin,
-                      uint32_t end, ReceiverChunk& out);
+                      uint32_t end, ReceiverChunk& out, Judgement& into);
   // The same from receivers judged before and their plans (a kept shot's chunk).
   void rejudgeReceivers(uint32_t p, std::span<const Judged> judged, const NearPlansView& plans, ReceiverChunk& out);
   // Judged receivers' factors into out.factors and out.replacedNew, the near ones' integrals by
@@ -293,9 +323,13 @@ struct Solver::State {
   const KeptShot* keptShot(uint32_t p) const {
     return p < keptShots.size() && pointChosen[p] ? keptShots[p].get() : nullptr;
   }
-  // The record for keeping patch p's first shot, sized, when it is to be kept (its point is
-  // chosen, it has none yet, the budget allows it and its size); keepShot fills and stores it.
-  std::optional<KeptShot> shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const;
+  // Before patch p's first shot from `frame` is judged: the bytes its judgements may take with
+  // the shot still kept (its point is chosen, it has none yet; the budget and the bound of a
+  // record less its frame's factors), or nothing when it is not to be kept.
+  std::optional<size_t> keepRoom(uint32_t p, const pxpl5::HemisphereFrame& frame) const;
+  // The record for keeping the shot just judged, whose judgements the chunks hold, sized;
+  // keepShot fills and stores it.
+  KeptShot shotToKeep() const;
   void keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, KeptShot& record);
   void storeShot(uint32_t p, KeptShot record);
   double backShare(const pxpl5::HemisphereFrame& frame, const glm::dvec3& eye) const;
@@ -649,12 +683,9 @@ const pxpl5::HemisphereFrame& Solver::State::frameFrom(uint32_t p, const glm::dv
 }
 
 void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& frame, const HemisphereAxes& axes,
-                                   uint32_t begin, uint32_t end, ReceiverChunk& out) {
+                                   uint32_t begin, uint32_t end, ReceiverChunk& out, Judgement& into) {
   // Sums in locals, stored once: the chunks sit side by side and are judged on different threads.
-  out.judged.clear();
-  out.plans.steps.clear();
-  out.plans.factors.clear();
-  out.plans.sizes.clear();
+  into.clear();
   double replacedPixels = 0;
   uint64_t nearCount = 0, smallCount = 0;
   const uint32_t si = patchSurface[p];
@@ -675,10 +706,10 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       const Receiver r = receiverOf(j);
       const double v = visibility(frame, axes, eye, j, pointToReceiver(eye, eyeNormal, r));
       const bool behind = glm::dot(normalOf(j), eye) <= offset[j];
-      const Judged& k = out.judged.emplace_back(Judged{j, behind ? Judged::kNearBehind : Judged::kNear, v});
+      const Judged& k = into.judged.emplace_back(Judged{j, behind ? Judged::kNearBehind : Judged::kNear, v});
       if (k.integrated())
         planPatchToReceiver(*trees[p], pieces, eyeNormal, r, settings.nearFieldRatio,
-                            settings.pieceRatio, settings.maxShooterSplits, out.plans);
+                            settings.pieceRatio, settings.maxShooterSplits, into.plans);
       ++nearCount;
     } else {
       // A far receiver whose back faces the centre gets nothing but lost light whatever its
@@ -689,7 +720,7 @@ void Solver::State::judgeReceivers(uint32_t p, const pxpl5::HemisphereFrame& fra
       const double unoccluded = pointToReceiver(eye, eyeNormal, receiverOf(j));
       if (unoccluded >= smallLimit || (unoccluded == 0 && pixelFactor[j] == 0)) continue;
       const double v = unoccluded > 0 ? visibility(frame, axes, eye, j, unoccluded) : 0;
-      out.judged.push_back({j, Judged::kSmallFront, unoccluded * v});  // its front faces the centre (above)
+      into.judged.push_back({j, Judged::kSmallFront, unoccluded * v});  // its front faces the centre (above)
       ++smallCount;
     }
     replacedPixels += pixelFactor[j];
@@ -740,20 +771,19 @@ void Solver::State::integrateJudged(uint32_t p, std::span<const Judged> judged, 
   out.replacedNew = replacedNew;
 }
 
-std::optional<Solver::State::KeptShot> Solver::State::shotToKeep(uint32_t p, const pxpl5::HemisphereFrame& frame) const {
-  if (!pointChosen[p] || (p < keptShots.size() && keptShots[p])) return {};
+std::optional<size_t> Solver::State::keepRoom(uint32_t p, const pxpl5::HemisphereFrame& frame) const {
+  if (!pointChosen[p] || (p < keptShots.size() && keptShots[p])) return std::nullopt;
+  const size_t least = KeptShot::bytesFor(frame.factors.size(), {});
+  const size_t free = settings.shotCacheBytes > keptBytes ? settings.shotCacheBytes - keptBytes : 0;
+  const size_t most = std::min(settings.shotCacheRecordBytes, free);
+  if (least > most) return std::nullopt;
+  return most - least;
+}
+
+Solver::State::KeptShot Solver::State::shotToKeep() const {
   KeptShot record;
   record.chunkStart.push_back({});
-  for (const ReceiverChunk& chunk : chunks) {
-    KeptShot::ChunkStart next = record.chunkStart.back();
-    next.judged += static_cast<uint32_t>(chunk.judged.size());
-    next.plans += static_cast<uint32_t>(chunk.plans.sizes.size());
-    next.steps += static_cast<uint32_t>(chunk.plans.steps.size());
-    next.factors += static_cast<uint32_t>(chunk.plans.factors.size());
-    record.chunkStart.push_back(next);
-  }
-  const size_t bytes = KeptShot::bytesFor(frame.factors.size(), record.chunkStart.back());
-  if (bytes > settings.shotCacheRecordBytes || keptBytes + bytes > settings.shotCacheBytes) return {};
+  for (const ReceiverChunk& chunk : chunks) record.chunkStart.push_back(record.chunkStart.back() + chunk.judgement.counts());
   return record;
 }
 
@@ -766,10 +796,11 @@ void Solver::State::keepShot(uint32_t p, const pxpl5::HemisphereFrame& frame, Ke
   record.plans.steps.reserve(end.steps);
   record.plans.factors.reserve(end.factors);
   for (const ReceiverChunk& chunk : chunks) {
-    record.judged.insert(record.judged.end(), chunk.judged.begin(), chunk.judged.end());
-    record.plans.sizes.insert(record.plans.sizes.end(), chunk.plans.sizes.begin(), chunk.plans.sizes.end());
-    record.plans.steps.insert(record.plans.steps.end(), chunk.plans.steps.begin(), chunk.plans.steps.end());
-    record.plans.factors.insert(record.plans.factors.end(), chunk.plans.factors.begin(), chunk.plans.factors.end());
+    const Judgement& j = chunk.judgement;
+    record.judged.insert(record.judged.end(), j.judged.begin(), j.judged.end());
+    record.plans.sizes.insert(record.plans.sizes.end(), j.plans.sizes.begin(), j.plans.sizes.end());
+    record.plans.steps.insert(record.plans.steps.end(), j.plans.steps.begin(), j.plans.steps.end());
+    record.plans.factors.insert(record.plans.factors.end(), j.plans.factors.begin(), j.plans.factors.end());
   }
   storeShot(p, std::move(record));
 }
@@ -859,17 +890,27 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
 
   // Near and small receivers get new factors, per channel (near ones weigh the shooter's
   // elements by their unshot light), judged on the graphics processors (which read p's tree).
+  // A shot that may be kept holds its chunks' judgements for keepShot, until they pass what its
+  // record may hold; then it is not kept, and the chunks still to judge drop theirs.
   readyToJudge(p);
   const auto elements = static_cast<uint32_t>(polygon.size());
-  renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int) {
-    if (before)
-      rejudgeReceivers(p, before->judgedOf(c), before->plansOf(c), chunks[c]);
-    else {
-      ReceiverChunk& chunk = chunks[c];
-      judgeReceivers(p, *frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
-                     static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunk);
-      integrateJudged(p, chunk.judged, {chunk.plans.steps, chunk.plans.factors, chunk.plans.sizes}, chunk);
+  const std::optional<size_t> room = before ? std::nullopt : keepRoom(p, *frame);
+  std::atomic<bool> keeping = room.has_value();
+  std::atomic<size_t> judgedBytes = 0;
+  renderer.runOnGraphicsProcessors(kReceiverChunks, [&](size_t c, int worker) {
+    ReceiverChunk& chunk = chunks[c];
+    if (before) {
+      rejudgeReceivers(p, before->judgedOf(c), before->plansOf(c), chunk);
+      return;
     }
+    const bool keep = keeping.load(std::memory_order_relaxed);
+    if (!keep) chunk.judgement.clear();
+    Judgement& judgement = keep ? chunk.judgement : judging[static_cast<size_t>(worker)];
+    judgeReceivers(p, *frame, axes, static_cast<uint32_t>(c * elements / kReceiverChunks),
+                   static_cast<uint32_t>((c + 1) * elements / kReceiverChunks), chunk, judgement);
+    integrateJudged(p, judgement.judged, judgement.plansView(), chunk);
+    const size_t bytes = judgement.counts().bytes();
+    if (keep && judgedBytes.fetch_add(bytes, std::memory_order_relaxed) + bytes > *room) keeping = false;
   });
   stats.reusedShots += before != nullptr;
   double replacedPixels = 0;
@@ -931,7 +972,7 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
   // which the calling thread takes at once: it is the longer (fresh pages to fill), so the
   // deposit can wait the tens of microseconds a worker takes to wake. Other shots (kept
   // already, or past the budget) pay no hand-over.
-  std::optional<KeptShot> toKeep = before ? std::nullopt : shotToKeep(p, *frame);
+  std::optional<KeptShot> toKeep = keeping ? std::optional(shotToKeep()) : std::nullopt;
   if (!toKeep) {
     depositAll();
   } else {
@@ -940,8 +981,9 @@ glm::dvec3 Solver::State::distribute(uint32_t p, const pxpl5::HemisphereFrame* c
       else depositAll();
     });
   }
-  // The chunks' storage stays for the next shot, within a bound.
-  stats.scratchBytes = util::releaseSpareBeyond(chunks, settings.scratchBytes);
+  // The chunks' and processors' storage stays for the next shot, within a bound.
+  stats.scratchBytes = util::releaseSpareBeyond(chunks, settings.scratchBytes) +
+                       util::releaseSpareBeyond(judging, settings.scratchBytes);
   return sky * scale;
 }
 
@@ -1608,11 +1650,12 @@ void Solver::Edit::moveShot(State& old, State& now, uint32_t p, uint32_t q, cons
     const HemisphereAxes axes = hemisphereAxes(glm::vec3(now.surfaceNormal[now.patchSurface[q]]));
     now.readyToJudge(q);
     for (uint32_t i : w->judged[1]) {
-      now.judgeReceivers(q, w->frame[1], axes, i, i + 1, judging);
-      shot.judged.insert(shot.judged.end(), judging.judged.begin(), judging.judged.end());
-      shot.plans.sizes.insert(shot.plans.sizes.end(), judging.plans.sizes.begin(), judging.plans.sizes.end());
-      shot.plans.steps.insert(shot.plans.steps.end(), judging.plans.steps.begin(), judging.plans.steps.end());
-      shot.plans.factors.insert(shot.plans.factors.end(), judging.plans.factors.begin(), judging.plans.factors.end());
+      const State::Judgement& j = judging.judgement;
+      now.judgeReceivers(q, w->frame[1], axes, i, i + 1, judging, judging.judgement);
+      shot.judged.insert(shot.judged.end(), j.judged.begin(), j.judged.end());
+      shot.plans.sizes.insert(shot.plans.sizes.end(), j.plans.sizes.begin(), j.plans.sizes.end());
+      shot.plans.steps.insert(shot.plans.steps.end(), j.plans.steps.begin(), j.plans.steps.end());
+      shot.plans.factors.insert(shot.plans.factors.end(), j.plans.factors.begin(), j.plans.factors.end());
     }
     for (const pxpl5::IdFactor& f : shot.factors) now.pixelFactor[f.id] = 0;
     shot.chunkStart.back() = {static_cast<uint32_t>(shot.judged.size()), static_cast<uint32_t>(shot.plans.sizes.size()),

@@ -60,7 +60,6 @@ SceneEditor::SceneEditor(Scene scene, MeshedScene meshed)
     : scene_(std::move(scene)),
       meshed_(std::move(meshed)),
       poses_(scene_),
-      contacts_(poses_.scene().surfaces, contactTolerance(scene_)),
       adaptive_(scene_.surfaces.size()) {
   if (meshed_.surfaces.size() != scene_.surfaces.size())
     throw std::invalid_argument("a meshed scene of " + std::to_string(meshed_.surfaces.size()) + " surfaces for " +
@@ -93,6 +92,8 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   const Object& o = scene_.objects[object];
   if (poseOf(o) == pose) return false;
 
+  if (!contacts_) contacts_.emplace(poses_.scene().surfaces, contactTolerance(scene_));  // as loaded: nothing moved yet
+  ContactIndex& contacts = *contacts_;
   const RigidMotion motion = poses_.motionTo(object, pose);
   const std::vector<uint32_t>& own = surfacesOf(object);  // ascending
   const std::vector<Surface>& uncut = poses_.scene().surfaces;
@@ -107,14 +108,14 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   // where it goes, and its own; the others' stay as they are.
   std::vector<uint32_t> concerned = own;
   for (size_t k = 0; k < own.size(); ++k) {
-    contacts_.supportsUnder(uncut[own[k]], concerned);
-    contacts_.supportsUnder(placed[k], concerned);
+    contacts.supportsUnder(uncut[own[k]], concerned);
+    contacts.supportsUnder(placed[k], concerned);
   }
   std::sort(concerned.begin(), concerned.end());
   concerned.erase(std::unique(concerned.begin(), concerned.end()), concerned.end());
   const auto fileObject = [&](bool there) {
     for (size_t k = 0; k < own.size(); ++k)
-      there ? contacts_.move(own[k], uncut[own[k]], placed[k]) : contacts_.move(own[k], placed[k], uncut[own[k]]);
+      there ? contacts.move(own[k], uncut[own[k]], placed[k]) : contacts.move(own[k], placed[k], uncut[own[k]]);
   };
   fileObject(true);
 
@@ -137,7 +138,7 @@ bool SceneEditor::setPose(uint32_t object, const ObjectPose& pose) {
   for (uint32_t s : concerned) {
     Recut recut;
     recut.surface = s;
-    recut.cut = contacts_.cut(s, uncutNow);
+    recut.cut = contacts.cut(s, uncutNow);
     const Surface& before = scene_.surfaces[s];
     const bool ofObject = before.object == object;
     if (!ofObject && recut.cut.holes == before.holes) continue;

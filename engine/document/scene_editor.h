@@ -72,7 +72,9 @@ class SceneEditor {
   MeshedScene meshed_;
   // The surfaces without cut-outs where the objects stand now, from which cut-outs are made.
   ScenePoses poses_;
-  ContactIndex contacts_;  // of the surfaces without cut-outs
+  // Of the surfaces without cut-outs; made at the first move: a scene that is only looked at and
+  // lit needs none (on the White Room it took 61 MB).
+  std::optional<ContactIndex> contacts_;
   // Movable objects' surfaces (only they move along) as loaded: the mesh positions and plane frame.
   struct Home {
     std::vector<Vec3> positions;

@@ -253,6 +253,35 @@ TEST(RadiositySolver, GivesBackScratchAShotLeftSpareBeyondItsBound) {
     for (size_t e = 0; e < box[s].elements.size(); ++e) EXPECT_EQ(a.elementRadiance(s)[e], b.elementRadiance(s)[e]);
 }
 
+// A shot that is not to be kept judges each chunk of receivers in its graphics processor's
+// scratch and drops the judgement once the chunk is integrated; a shot that may be kept holds its
+// chunks' judgements for keeping until they pass what a record may hold. A box's ceiling shot as
+// one patch judges every element near: kept, its chunks hold it all; with no record allowed,
+// little; with a record that its frame fits and its judgements do not, what came before they
+// passed it. The light is the same bit for bit.
+TEST(RadiositySolver, AShotNotKeptDropsItsJudgementsAsItGoes) {
+  std::vector<Surface> box = closedBox(1, 1.0 / 32, glm::dvec3(0.5), glm::dvec3(0));
+  box[1].emission = glm::dvec3(1);  // the ceiling
+  for (size_t s = 0; s < box.size(); ++s) box[s].patchOfElement = groupIntoPatches(box[s], s == 1 ? 2.0 : 4.0 / 32);
+  SolverSettings none, part;
+  none.shotCacheRecordBytes = 0;
+  part.shotCacheRecordBytes = 256 << 10;
+  Solver kept(box), unkept(box, none), passed(box, part);
+  for (Solver* solver : {&kept, &unkept, &passed}) ASSERT_TRUE(solver->step());
+  const uint64_t all = kept.stats().scratchBytes;
+  EXPECT_LT(unkept.stats().scratchBytes, all / 3);
+  EXPECT_GT(passed.stats().scratchBytes, unkept.stats().scratchBytes);
+  EXPECT_LT(passed.stats().scratchBytes, all / 2);
+  for (Solver* solver : {&kept, &unkept, &passed}) solver->solve(0.01, 30);
+  EXPECT_GT(kept.stats().reusedShots, 0u);
+  EXPECT_EQ(passed.stats().reusedShots, 0u);
+  for (uint32_t s = 0; s < box.size(); ++s)
+    for (size_t e = 0; e < box[s].elements.size(); ++e) {
+      EXPECT_EQ(kept.elementRadiance(s)[e], unkept.elementRadiance(s)[e]);
+      EXPECT_EQ(kept.elementRadiance(s)[e], passed.elementRadiance(s)[e]);
+    }
+}
+
 // The heap a solver holds per element (issue 20: the White Room's 2.6 million elements must fit
 // in 2.5 GB with the scene, its meshes and the display): constructed, and after its first shot.
 // Measured between a box of N elements and one of 4 N, which cancels what does not grow with the
