@@ -179,14 +179,9 @@ TEST(SceneRenderer, UpdatingTheChangedSurfacesDrawsWhatUploadingAnewDraws) {
   EXPECT_EQ(image.pixels, expected.pixels);
 }
 
-// The selected object's edges are drawn in the highlight colour, and no other's.
-TEST(SceneRenderer, TheSelectedObjectIsHighlighted) {
-  const Context context;
-  engine::DisplayMesh mesh;
-  mesh.surfaces = {square(0, -5), square(1, -5)};
-  for (glm::vec3& r : mesh.surfaces[0].radiance) r = glm::vec3{0};
-  for (glm::vec3& r : mesh.surfaces[1].radiance) r = glm::vec3{0};
-  SceneRenderer renderer;
+// Uploads `mesh` (objects 0 and 1 at the same place) with object 0 moved left and object 1 right,
+// and returns a frame that looks at both.
+FrameSettings sideBySide(SceneRenderer& renderer, const engine::DisplayMesh& mesh) {
   renderer.upload(mesh);
   renderer.setObjectTransform(0, glm::translate(glm::mat4{1}, glm::vec3{-1.5f, 0, 0}));
   renderer.setObjectTransform(1, glm::translate(glm::mat4{1}, glm::vec3{1.5f, 0, 0}));
@@ -195,6 +190,18 @@ TEST(SceneRenderer, TheSelectedObjectIsHighlighted) {
   frame.height = kHeight;
   frame.clipFromDisplay = glm::perspective(glm::radians(60.0f), static_cast<float>(kWidth) / kHeight, 0.1f, 100.0f) *
                           glm::lookAt(glm::vec3{0}, glm::vec3{0, 0, -1}, glm::vec3{0, 1, 0});
+  return frame;
+}
+
+// The selected object's edges are drawn in the highlight colour, and no other's.
+TEST(SceneRenderer, TheSelectedObjectIsHighlighted) {
+  const Context context;
+  engine::DisplayMesh mesh;
+  mesh.surfaces = {square(0, -5), square(1, -5)};
+  for (glm::vec3& r : mesh.surfaces[0].radiance) r = glm::vec3{0};
+  for (glm::vec3& r : mesh.surfaces[1].radiance) r = glm::vec3{0};
+  SceneRenderer renderer;
+  FrameSettings frame = sideBySide(renderer, mesh);
   frame.highlight = 1;
   const ImageRgb8 image = drawn(renderer, mesh, frame);
   // The highlight is orange (1, 0.8, 0.1); the left square (object 0) has no edges drawn.
@@ -219,14 +226,7 @@ TEST(SceneRenderer, EdgesAreUploadedWhenFirstDrawn) {
   engine::DisplayMesh mesh;
   mesh.surfaces = {square(0, -5), square(1, -5)};
   SceneRenderer renderer;
-  renderer.upload(mesh);
-  renderer.setObjectTransform(0, glm::translate(glm::mat4{1}, glm::vec3{-1.5f, 0, 0}));
-  renderer.setObjectTransform(1, glm::translate(glm::mat4{1}, glm::vec3{1.5f, 0, 0}));
-  FrameSettings frame;
-  frame.width = kWidth;
-  frame.height = kHeight;
-  frame.clipFromDisplay = glm::perspective(glm::radians(60.0f), static_cast<float>(kWidth) / kHeight, 0.1f, 100.0f) *
-                          glm::lookAt(glm::vec3{0}, glm::vec3{0, 0, -1}, glm::vec3{0, 1, 0});
+  FrameSettings frame = sideBySide(renderer, mesh);
   drawn(renderer, mesh, frame);
   EXPECT_EQ(renderer.edgeUploads(), 0u);
   frame.highlight = 1;
