@@ -138,7 +138,7 @@ class SceneRenderer {
   size_t edgeUploads_ = 0;
   // Scratch for assembling a chunk's buffers, kept from chunk to chunk.
   std::vector<glm::vec3> vectors_;
-  std::vector<uint32_t> indices_;  // also colours
+  std::vector<uint32_t> indices_;  // also the RGBA8 colours of fillRadiance
   std::optional<DisplayColours> colours_;  // at the exposure last asked for
 };
 

@@ -74,7 +74,6 @@ std::vector<uint32_t> surfaceOutline(const SurfaceMesh& meshed) {
   return outline;
 }
 
-
 size_t DisplayMesh::triangleCount() const {
   size_t count = 0;
   for (const SurfaceDisplay& s : surfaces) count += s.triangles.size() / 3;
